@@ -1,0 +1,68 @@
+// BDS5 variable memory.
+#include "bds5_variable_store.h"
+
+namespace drive_core::bds5 {
+
+namespace cat = catalog::bds5;
+
+Bds5VariableStore::Bds5VariableStore() {
+    const auto vars = cat::variables();
+    std::size_t next = 0;
+    for (const cat::VariableInfo& v : vars) {
+        m_firstSlot.push_back(next);
+        next += v.firstIndex == 0 ? 1 : std::size_t(v.lastIndex - v.firstIndex + 1);
+    }
+    m_values.assign(next, 0);
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+        const std::size_t count = vars[i].firstIndex == 0 ? 1 : std::size_t(vars[i].lastIndex - vars[i].firstIndex + 1);
+        for (std::size_t k = 0; k < count; ++k) m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
+    }
+}
+
+void Bds5VariableStore::powerUp() {
+    const auto vars = cat::variables();
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+        if (vars[i].persistence != cat::Persistence::Volatile) continue;
+        const std::size_t count = vars[i].firstIndex == 0 ? 1 : std::size_t(vars[i].lastIndex - vars[i].firstIndex + 1);
+        for (std::size_t k = 0; k < count; ++k) m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
+    }
+}
+
+std::size_t Bds5VariableStore::slot(const cat::VariableRef& ref) const {
+    const auto position = std::size_t(ref.info - cat::variables().data());
+    const std::size_t offset = ref.info->firstIndex == 0 ? 0 : std::size_t(ref.index - ref.info->firstIndex);
+    return m_firstSlot[position] + offset;
+}
+
+std::optional<std::int32_t> Bds5VariableStore::read(std::string_view upperName) const {
+    const auto ref = cat::findVariable(upperName);
+    if (!ref) return std::nullopt;
+    return read(*ref);
+}
+
+std::int32_t Bds5VariableStore::read(const cat::VariableRef& ref) const { return m_values[slot(ref)]; }
+
+int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, bool driveEnabled) {
+    const auto ref = cat::findVariable(upperName);
+    if (!ref) return 80;
+    switch (ref->info->write) {
+    case cat::WriteCondition::Never: return 81;
+    case cat::WriteCondition::Factory: return 111;
+    case cat::WriteCondition::Disabled:
+        if (driveEnabled) return 51;
+        break;
+    case cat::WriteCondition::Always:
+    case cat::WriteCondition::NoMotion: break;
+    }
+    if (value < cat::minimumOf(*ref->info) || value > cat::maximumOf(*ref->info)) return 83;
+    m_values[slot(*ref)] = std::int32_t(value);
+    return 0;
+}
+
+void Bds5VariableStore::set(const cat::VariableRef& ref, std::int32_t value) { m_values[slot(ref)] = value; }
+
+void Bds5VariableStore::set(std::string_view upperName, std::int32_t value) {
+    if (const auto ref = cat::findVariable(upperName)) set(*ref, value);
+}
+
+} // namespace drive_core::bds5

@@ -1,0 +1,75 @@
+// Look-ups over the BDS5 catalog tables (the tables themselves live in bds5_errors/commands/variables.cpp).
+#include "bds5_catalog.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+namespace drive_core::catalog::bds5 {
+
+const ErrorInfo* findError(int code) {
+    const auto table = errors();
+    const auto it = std::find_if(table.begin(), table.end(), [code](const ErrorInfo& e) { return e.code == code; });
+    return it == table.end() ? nullptr : &*it;
+}
+
+const CommandInfo* findCommand(std::string_view upperName) {
+    const auto table = commands();
+    const auto it =
+        std::find_if(table.begin(), table.end(), [upperName](const CommandInfo& c) { return c.name == upperName; });
+    return it == table.end() ? nullptr : &*it;
+}
+
+std::optional<VariableRef> findVariable(std::string_view upperName) {
+    // Plain names first: "XS" is not X with index "S", and "TMR1" must not match a plain "TMR".
+    for (const VariableInfo& v : variables()) {
+        if (v.firstIndex == 0 && v.name == upperName) return VariableRef{&v, 0};
+    }
+    // Indexed families: the longest stem followed by a decimal index in range.
+    const VariableInfo* best = nullptr;
+    int bestIndex = 0;
+    for (const VariableInfo& v : variables()) {
+        if (v.firstIndex == 0 || !upperName.starts_with(v.name)) continue;
+        const std::string_view digits = upperName.substr(v.name.size());
+        if (digits.empty() || digits.front() == '0' ||
+            !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+            continue;
+        int index = 0;
+        const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+        if (ec != std::errc{} || index < v.firstIndex || index > v.lastIndex) continue;
+        if (!best || v.name.size() > best->name.size()) {
+            best = &v;
+            bestIndex = index;
+        }
+    }
+    if (best) return VariableRef{best, bestIndex};
+    return std::nullopt;
+}
+
+std::int64_t minimumOf(const VariableInfo& v) {
+    switch (v.limits) {
+    case LimitClass::Long: return INT32_MIN;
+    case LimitClass::LongPositive: return 0;
+    case LimitClass::Short: return -32768;
+    case LimitClass::ShortPositive: return 0;
+    case LimitClass::Switch: return 0;
+    case LimitClass::Range: return v.minimum;
+    case LimitClass::None: return INT32_MIN;
+    }
+    return INT32_MIN;
+}
+
+std::int64_t maximumOf(const VariableInfo& v) {
+    switch (v.limits) {
+    case LimitClass::Long: return INT32_MAX;
+    case LimitClass::LongPositive: return INT32_MAX;
+    case LimitClass::Short: return 32767;
+    case LimitClass::ShortPositive: return 32767;
+    case LimitClass::Switch: return 1;
+    case LimitClass::Range: return v.maximum;
+    case LimitClass::None: return INT32_MAX;
+    }
+    return INT32_MAX;
+}
+
+} // namespace drive_core::catalog::bds5

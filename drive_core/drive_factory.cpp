@@ -1,0 +1,39 @@
+// Drive families by name.
+#include "drive_factory.h"
+
+#include "bds5/bds5_drive.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace drive_core {
+
+std::optional<DriveFamily> familyFromName(std::string_view name) {
+    std::string lower(name);
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (lower == "bds5") return DriveFamily::Bds5;
+    if (lower == "sc750") return DriveFamily::Sc750;
+    if (lower == "pmc960") return DriveFamily::Pmc960;
+    return std::nullopt;
+}
+
+std::string_view familyName(DriveFamily family) {
+    switch (family) {
+    case DriveFamily::Bds5: return "bds5";
+    case DriveFamily::Sc750: return "sc750";
+    case DriveFamily::Pmc960: return "pmc960";
+    }
+    return "bds5";
+}
+
+std::unique_ptr<Drive> makeDrive(DriveFamily family) {
+    switch (family) {
+    case DriveFamily::Bds5: return std::make_unique<bds5::Bds5Drive>();
+    case DriveFamily::Sc750: // simulated in later issues (SC750: issue 8, PMC-960: issue 9)
+    case DriveFamily::Pmc960: return nullptr;
+    }
+    return nullptr;
+}
+
+} // namespace drive_core

@@ -1,0 +1,63 @@
+// BDS5 prompt and error-line recognition.
+#include "bds5_protocol.h"
+
+#include <QRegularExpression>
+
+namespace serialport {
+
+QString modeName(Bds5Mode mode) {
+    switch (mode) {
+    case Bds5Mode::Unknown: return QStringLiteral("Unknown");
+    case Bds5Mode::Interactive: return QStringLiteral("Interactive");
+    case Bds5Mode::Monitor: return QStringLiteral("Monitor");
+    case Bds5Mode::SingleStep: return QStringLiteral("Single-step");
+    case Bds5Mode::Editor: return QStringLiteral("Editor");
+    case Bds5Mode::ProgramLoad: return QStringLiteral("Program load");
+    case Bds5Mode::Insert: return QStringLiteral("Editor insert");
+    case Bds5Mode::Find: return QStringLiteral("Editor find");
+    case Bds5Mode::Change: return QStringLiteral("Editor change");
+    case Bds5Mode::Running: return QStringLiteral("Running");
+    }
+    return {};
+}
+
+std::optional<QString> trailingPrompt(const QString& text) {
+    // Single-drop prompts: -->, ==>, s-->, s-A> ..., e->, l->, i->, f->, c->.
+    // Multidrop prompts: the axis ID, the mode character, '>' (A->, A=>, As>, Ae>, ...).
+    static const QRegularExpression kPrompt(
+        QStringLiteral("\\r\\n(-->|==>|s-[-ABCV*]>|[elifc]->|[0-9A-Z][-=selifc]>)$"));
+    const auto match = kPrompt.match(text);
+    if (!match.hasMatch()) return std::nullopt;
+    return match.captured(1);
+}
+
+Bds5Mode modeOfPrompt(const QString& prompt) {
+    if (prompt == QLatin1String("-->")) return Bds5Mode::Interactive;
+    if (prompt == QLatin1String("==>")) return Bds5Mode::Monitor;
+    if (prompt.startsWith(QLatin1String("s-"))) return Bds5Mode::SingleStep;
+    // Multidrop prompts start with the axis ID (a digit or capital); the mode character slides right.
+    const bool multidrop = !prompt.isEmpty() && (prompt[0].isDigit() || prompt[0].isUpper());
+    const QChar c = multidrop ? (prompt.size() > 1 ? prompt[1] : QChar()) : (prompt.isEmpty() ? QChar() : prompt[0]);
+    switch (c.toLatin1()) {
+    case '-': return Bds5Mode::Interactive;
+    case '=': return Bds5Mode::Monitor;
+    case 's': return Bds5Mode::SingleStep;
+    case 'e': return Bds5Mode::Editor;
+    case 'l': return Bds5Mode::ProgramLoad;
+    case 'i': return Bds5Mode::Insert;
+    case 'f': return Bds5Mode::Find;
+    case 'c': return Bds5Mode::Change;
+    default: return Bds5Mode::Unknown;
+    }
+}
+
+std::optional<Bds5ErrorLine> parseErrorLine(const QString& line) {
+    static const QRegularExpression kError(
+        QStringLiteral("^\\x07?ERR (\\d+)(?: LINE (\\d+))?(?: '(.*)')?\\s+(\\S.*?)\\s*$"));
+    const auto match = kError.match(line);
+    if (!match.hasMatch()) return std::nullopt;
+    return Bds5ErrorLine{match.captured(1).toInt(), match.captured(2).toInt(), match.captured(3),
+                         match.captured(4)};
+}
+
+} // namespace serialport

@@ -1,0 +1,163 @@
+// The BDS5 session state machine.
+#include "bds5_session.h"
+
+namespace serialport {
+
+namespace {
+constexpr int kTailKeep = 256;
+constexpr int kBaseTimeoutMs = 3000; // the slowest interactive commands (EN) take "a few seconds"
+constexpr int kWakeAfterMs = 600;    // no prompt this long after opening: send a CR to ask for one
+const QString kIgnored = QStringLiteral("ERROR MSG WAITING--COMMAND IGNORED");
+} // namespace
+
+Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
+    qRegisterMetaType<Bds5Response>();
+    m_silence.setSingleShot(true);
+    m_silence.setInterval(kPromptSilenceMs);
+    m_timeout.setSingleShot(true);
+    m_wake.setSingleShot(true);
+    m_wake.setInterval(kWakeAfterMs);
+    connect(&m_link, &Link::bytesReceived, this, &Bds5Session::onBytes);
+    connect(&m_link, &Link::opened, this, &Bds5Session::onLinkOpened);
+    connect(&m_link, &Link::closed, this, &Bds5Session::onLinkClosed);
+    connect(&m_silence, &QTimer::timeout, this, &Bds5Session::onPromptConfirmed);
+    connect(&m_timeout, &QTimer::timeout, this, &Bds5Session::onTimeout);
+    connect(&m_wake, &QTimer::timeout, this, [this] {
+        if (m_state == State::WaitingForPrompt && !m_rawLineOpen) m_link.write("\r");
+    });
+    if (m_link.isOpen()) onLinkOpened();
+}
+
+quint64 Bds5Session::send(const QString& line) {
+    const quint64 id = m_nextId++;
+    m_queue.push_back(Pending{id, line});
+    pump();
+    return id;
+}
+
+void Bds5Session::sendRaw(const QByteArray& bytes) {
+    if (m_current) {
+        m_heldRaw.append(bytes);
+        return;
+    }
+    for (const char c : bytes) {
+        if (c == '\r' || c == '\x1b' || c == '\x18') m_rawLineOpen = false;
+        else if (c >= ' ') m_rawLineOpen = true;
+    }
+    if (bytes.contains('\r') || bytes.contains('\x1b')) setState(State::WaitingForPrompt);
+    m_link.write(bytes);
+}
+
+void Bds5Session::cancelPending() {
+    std::deque<Pending> dropped;
+    dropped.swap(m_queue);
+    for (const Pending& p : dropped) emit failed(p.id, tr("cancelled before it was sent"));
+}
+
+void Bds5Session::onLinkOpened() {
+    m_tail.clear();
+    setState(State::WaitingForPrompt);
+    m_wake.start();
+}
+
+void Bds5Session::onLinkClosed() {
+    m_silence.stop();
+    m_timeout.stop();
+    m_wake.stop();
+    if (m_current) emit failed(m_current->id, tr("the link closed before the drive answered"));
+    m_current.reset();
+    cancelPending();
+    m_mode = Bds5Mode::Unknown;
+    setState(State::Closed);
+}
+
+void Bds5Session::onBytes(const QByteArray& bytes) {
+    emit rawReceived(bytes);
+    const QString text = QString::fromLatin1(bytes);
+    m_tail = (m_tail + text).right(kTailKeep);
+    if (m_current) m_response += text;
+    // A prompt counts only when it ends the stream and the drive then stays silent (§2.10 rule 6).
+    if (trailingPrompt(m_tail)) m_silence.start();
+    else m_silence.stop();
+}
+
+void Bds5Session::onPromptConfirmed() {
+    const auto prompt = trailingPrompt(m_tail);
+    if (!prompt) return;
+    m_wake.stop();
+    if (*prompt != m_prompt || modeOfPrompt(*prompt) != m_mode) {
+        m_prompt = *prompt;
+        m_mode = modeOfPrompt(*prompt);
+        emit modeChanged(m_mode, m_prompt);
+    }
+    if (m_current) {
+        m_timeout.stop();
+        Pending done = *m_current;
+        m_current.reset();
+        Bds5Response response = parseResponse(done, std::exchange(m_response, {}), *prompt);
+        if (response.ignored && done.retries > 0) { // the drive flushed a held error: send it again (rule 3)
+            --done.retries;
+            m_queue.push_front(done);
+        } else {
+            emit finished(done.id, response);
+        }
+    }
+    setState(State::Ready);
+    if (!m_heldRaw.isEmpty()) sendRaw(std::exchange(m_heldRaw, {}));
+    pump();
+}
+
+void Bds5Session::onTimeout() {
+    if (!m_current) return;
+    const Pending lost = *m_current;
+    m_current.reset();
+    m_response.clear();
+    setState(State::WaitingForPrompt);
+    emit failed(lost.id, tr("no prompt from the drive within %1 ms after \"%2\"")
+                             .arg(timeoutMsFor(lost.line))
+                             .arg(lost.line));
+    m_link.write("\r"); // ask for a prompt so the queue can go on
+}
+
+void Bds5Session::pump() {
+    if (m_current || m_queue.empty() || m_state != State::Ready || m_rawLineOpen) return;
+    m_current = m_queue.front();
+    m_queue.pop_front();
+    m_response.clear();
+    setState(State::Busy);
+    m_timeout.start(timeoutMsFor(m_current->line));
+    m_link.write(m_current->line.toLatin1() + '\r');
+}
+
+void Bds5Session::setState(State state) {
+    if (state == m_state) return;
+    m_state = state;
+    emit stateChanged(state);
+}
+
+int Bds5Session::timeoutMsFor(const QString& line) const {
+    // Echo and answer both cross the wire: allow twice the line plus a screenful of answer at the baud rate.
+    const int baud = m_link.baudRate() > 0 ? m_link.baudRate() : 115200;
+    const int chars = 2 * int(line.size()) + 1000;
+    return kBaseTimeoutMs + chars * 10 * 1000 / baud;
+}
+
+Bds5Response Bds5Session::parseResponse(const Pending& command, QString text, const QString& prompt) const {
+    Bds5Response r;
+    r.command = command.line;
+    r.prompt = prompt;
+    text.chop(prompt.size());
+    const QString echo = command.line + QStringLiteral("\r\n");
+    if (text.startsWith(echo)) text.remove(0, echo.size());
+    else if (text.startsWith(QStringLiteral("\r\n"))) text.remove(0, 2); // ECHO 0: only the line end
+    for (QString line : text.split(QStringLiteral("\r\n"))) {
+        while (line.startsWith(QLatin1Char('\n'))) line.remove(0, 1);
+        if (line.isEmpty()) continue;
+        if (line == kIgnored) r.ignored = true;
+        else if (const auto error = parseErrorLine(line)) r.errors.append(*error);
+        else r.lines.append(line);
+    }
+    return r;
+}
+
+} // namespace serialport

@@ -1,0 +1,90 @@
+// Bds5Session: talks to one BDS5 over any Link. An asynchronous state machine: it sends a queued command
+// only at a prompt, collects the response up to the next prompt, and reports typed results and ERR lines.
+// GUI thread; never blocks and never spins a nested event loop.
+#pragma once
+
+#include "bds5_protocol.h"
+#include "link.h"
+
+#include <QList>
+#include <QObject>
+#include <QStringList>
+#include <QTimer>
+
+#include <deque>
+
+namespace serialport {
+
+struct Bds5Response {
+    QString command;
+    QStringList lines;           // output lines without CR LF; ERR lines are in errors instead
+    QList<Bds5ErrorLine> errors; // errors the drive reported for this command (and held ones it flushed)
+    QString prompt;              // the prompt that ended the response
+    bool ignored = false;        // ERROR MSG WAITING--COMMAND IGNORED, still so after the one automatic retry
+};
+
+class Bds5Session final : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Closed, WaitingForPrompt, Ready, Busy };
+
+    explicit Bds5Session(Link& link, QObject* parent = nullptr);
+
+    // Queues one instruction (without CR). Returns an id that finished()/failed() carry.
+    quint64 send(const QString& line);
+    // Bytes typed in a terminal, passed through untouched; held while a queued command is in flight.
+    void sendRaw(const QByteArray& bytes);
+    // Drops every queued command that has not been sent yet (each gets failed()).
+    void cancelPending();
+
+    State state() const { return m_state; }
+    Bds5Mode mode() const { return m_mode; }
+    QString lastPrompt() const { return m_prompt; }
+    Link& link() { return m_link; }
+
+    // How long the drive may stay silent after a prompt-shaped tail before the prompt counts (§2.10 rule 6).
+    static constexpr int kPromptSilenceMs = 15;
+
+signals:
+    void rawReceived(const QByteArray& bytes); // every byte from the drive, for the terminal and captures
+    void modeChanged(serialport::Bds5Mode mode, const QString& prompt);
+    void stateChanged(serialport::Bds5Session::State state);
+    void finished(quint64 id, const serialport::Bds5Response& response);
+    void failed(quint64 id, const QString& reason);
+
+private:
+    struct Pending {
+        quint64 id;
+        QString line;
+        int retries = 1;
+    };
+
+    void onBytes(const QByteArray& bytes);
+    void onPromptConfirmed();
+    void onTimeout();
+    void onLinkOpened();
+    void onLinkClosed();
+    void pump();
+    void setState(State state);
+    Bds5Response parseResponse(const Pending& command, QString text, const QString& prompt) const;
+    int timeoutMsFor(const QString& line) const;
+
+    Link& m_link;
+    State m_state = State::Closed;
+    Bds5Mode m_mode = Bds5Mode::Unknown;
+    QString m_prompt;
+    QString m_tail;     // the last bytes received, to recognise a prompt
+    QString m_response; // everything received since the current command was sent
+    std::deque<Pending> m_queue;
+    std::optional<Pending> m_current;
+    QByteArray m_heldRaw;      // terminal bytes waiting for the current command to finish
+    bool m_rawLineOpen = false; // the terminal user has typed part of a line
+    quint64 m_nextId = 1;
+    QTimer m_silence;
+    QTimer m_timeout;
+    QTimer m_wake;
+};
+
+} // namespace serialport
+
+Q_DECLARE_METATYPE(serialport::Bds5Response)

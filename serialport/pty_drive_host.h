@@ -1,0 +1,52 @@
+// Puts a simulated drive on a pseudo-terminal (or on a pair of file descriptors such as stdin/stdout)
+// and runs it in real time. Plain POSIX, no Qt: this is the engine of servodesk-sim.
+#pragma once
+
+#include "drive_core/drive.h"
+
+#include <atomic>
+#include <memory>
+#include <string>
+
+namespace serialport {
+
+class PtyDriveHost {
+public:
+    struct Options {
+        double speedFactor = 1.0; // simulated seconds per wall-clock second
+        int baudRate = 9600;      // pace the drive's output as its serial port would; 0 = unpaced
+        bool lfIsCr = false;      // treat a lone LF from the host as CR (for line-buffered terminals)
+    };
+
+    PtyDriveHost(std::unique_ptr<drive_core::Drive> drive, Options options);
+    ~PtyDriveHost();
+
+    // Creates a new pseudo-terminal in raw mode and returns its slave path ("/dev/pts/5"); "" on failure
+    // with errorText() set. The host keeps the slave open itself so the drive survives clients that
+    // come and go.
+    std::string openPty();
+    // Uses the given descriptors instead of a pty (servodesk-sim --stdio).
+    void useDescriptors(int inFd, int outFd);
+
+    // Powers the drive up and runs it until stop becomes true or the input reaches end of file
+    // (stdio only). Returns 0, or 1 on an I/O error (errorText() says which).
+    int run(const std::atomic<bool>& stop);
+
+    const std::string& errorText() const { return m_error; }
+
+private:
+    void flushOutput(double wallDeltaS, bool all);
+
+    std::unique_ptr<drive_core::Drive> m_drive;
+    Options m_options;
+    int m_inFd = -1;
+    int m_outFd = -1;
+    int m_masterFd = -1;
+    int m_slaveFd = -1;
+    std::string m_backlog;
+    double m_byteCredit = 0;
+    bool m_lastWasCr = false;
+    std::string m_error;
+};
+
+} // namespace serialport

@@ -1,0 +1,54 @@
+// SimulatorLink: the GUI-thread face of a simulated drive running in a worker thread.
+#include "simulator_link.h"
+
+#include "simulator_worker.h"
+
+#include "drive_core/drive_factory.h"
+
+namespace serialport {
+
+SimulatorLink::SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent)
+    : Link(parent), m_family(family), m_options(options) {
+    m_thread.setObjectName(QStringLiteral("simulated-drive"));
+}
+
+SimulatorLink::~SimulatorLink() { close(); }
+
+void SimulatorLink::open() {
+    if (m_open) return;
+    m_worker = new SimulatorWorker(m_family, m_options);
+    m_worker->moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    connect(m_worker, &SimulatorWorker::transmitted, this, &Link::bytesReceived);
+    connect(m_worker, &SimulatorWorker::failed, this, [this](const QString& message) {
+        emit errorOccurred(message);
+        close();
+    });
+    m_thread.start();
+    QMetaObject::invokeMethod(m_worker, &SimulatorWorker::start, Qt::QueuedConnection);
+    m_open = true;
+    emit opened();
+}
+
+void SimulatorLink::close() {
+    if (!m_open) return;
+    m_open = false;
+    m_thread.quit();
+    m_thread.wait();
+    m_worker = nullptr;
+    emit closed();
+}
+
+void SimulatorLink::write(const QByteArray& bytes) {
+    if (!m_open || !m_worker) {
+        emit errorOccurred(tr("The simulated drive is not running: nothing was sent"));
+        return;
+    }
+    QMetaObject::invokeMethod(m_worker, [worker = m_worker, bytes] { worker->receive(bytes); }, Qt::QueuedConnection);
+}
+
+QString SimulatorLink::description() const {
+    return tr("Simulated %1").arg(QString::fromLatin1(drive_core::familyName(m_family)).toUpper());
+}
+
+} // namespace serialport

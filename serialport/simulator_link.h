@@ -1,0 +1,45 @@
+// A Link to an in-process simulated drive. The drive runs in a worker thread, stepped in 1 ms ticks
+// paced to the wall clock (times a speed factor); the bytes it sends can be paced at a baud rate.
+#pragma once
+
+#include "link.h"
+
+#include "drive_core/drive.h"
+
+#include <QThread>
+
+#include <memory>
+
+namespace serialport {
+
+class SimulatorWorker;
+
+class SimulatorLink final : public Link {
+    Q_OBJECT
+public:
+    struct Options {
+        double speedFactor = 1.0; // simulated seconds per wall-clock second
+        int baudRate = 9600;      // pace drive->host bytes as a real port would; 0 = unlimited
+    };
+
+    SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent = nullptr);
+    explicit SimulatorLink(drive_core::DriveFamily family, QObject* parent = nullptr)
+        : SimulatorLink(family, Options{}, parent) {}
+    ~SimulatorLink() override;
+
+    void open() override;
+    void close() override;
+    bool isOpen() const override { return m_open; }
+    void write(const QByteArray& bytes) override;
+    QString description() const override;
+    int baudRate() const override { return m_options.baudRate; }
+
+private:
+    drive_core::DriveFamily m_family;
+    Options m_options;
+    QThread m_thread;
+    SimulatorWorker* m_worker = nullptr; // lives in m_thread; deleted when the thread finishes
+    bool m_open = false;
+};
+
+} // namespace serialport

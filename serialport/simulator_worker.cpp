@@ -1,0 +1,69 @@
+// Simulated-drive worker: 1 ms drive ticks paced to the wall clock, baud-paced transmit.
+#include "simulator_worker.h"
+
+#include "drive_core/drive_factory.h"
+
+#include <algorithm>
+
+namespace serialport {
+
+namespace {
+constexpr auto kTick = std::chrono::microseconds(1000);
+constexpr int kMaxTicksPerWake = 200; // after a stall, catch up at most this much at once
+} // namespace
+
+SimulatorWorker::SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::Options options)
+    : m_family(family), m_options(options) {}
+
+SimulatorWorker::~SimulatorWorker() = default;
+
+void SimulatorWorker::start() {
+    m_drive = drive_core::makeDrive(m_family);
+    if (!m_drive) {
+        emit failed(tr("No simulator for the %1 yet").arg(QString::fromLatin1(drive_core::familyName(m_family))));
+        return;
+    }
+    m_drive->powerUp();
+    m_clock.start();
+    m_timer = new QTimer(this);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    connect(m_timer, &QTimer::timeout, this, &SimulatorWorker::tick);
+    m_timer->start(1);
+    tick();
+}
+
+void SimulatorWorker::receive(const QByteArray& bytes) {
+    if (!m_drive) return;
+    m_drive->receive(std::string_view(bytes.constData(), std::size_t(bytes.size())));
+}
+
+void SimulatorWorker::tick() {
+    const qint64 wallUs = m_clock.nsecsElapsed() / 1000;
+    const qint64 wallDeltaUs = wallUs - m_lastWallUs;
+    m_lastWallUs = wallUs;
+    m_simulatedUs += double(wallDeltaUs) * m_options.speedFactor;
+    int ticks = 0;
+    while (double(m_drive->now().count()) + double(kTick.count()) <= m_simulatedUs && ticks < kMaxTicksPerWake) {
+        m_drive->step(kTick);
+        ++ticks;
+    }
+    if (ticks == kMaxTicksPerWake) m_simulatedUs = double(m_drive->now().count()); // drop the lost time
+    const std::string out = m_drive->takeTransmitted();
+    m_backlog.append(out.data(), qsizetype(out.size()));
+    if (m_backlog.isEmpty()) {
+        m_byteCredit = 0;
+        return;
+    }
+    qsizetype count = m_backlog.size();
+    if (m_options.baudRate > 0) {
+        // 8N1: ten bits a character on the wire.
+        m_byteCredit = std::min(m_byteCredit + double(wallDeltaUs) * m_options.baudRate / 10.0 / 1e6, 4096.0);
+        count = std::min<qsizetype>(count, qsizetype(m_byteCredit));
+        m_byteCredit -= double(count);
+    }
+    if (count == 0) return;
+    emit transmitted(m_backlog.left(count));
+    m_backlog.remove(0, count);
+}
+
+} // namespace serialport

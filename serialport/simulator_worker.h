@@ -1,0 +1,42 @@
+// Runs one simulated drive in its own thread: steps it against the wall clock, carries its UART bytes.
+// Internal to SimulatorLink.
+#pragma once
+
+#include "simulator_link.h"
+
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace serialport {
+
+class SimulatorWorker final : public QObject {
+    Q_OBJECT
+public:
+    SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::Options options);
+    ~SimulatorWorker() override;
+
+    // Worker thread only (invoked through queued calls).
+    void start();
+    void receive(const QByteArray& bytes);
+
+signals:
+    void transmitted(const QByteArray& bytes);
+    void failed(const QString& message);
+
+private:
+    void tick();
+
+    drive_core::DriveFamily m_family;
+    SimulatorLink::Options m_options;
+    std::unique_ptr<drive_core::Drive> m_drive;
+    QTimer* m_timer = nullptr;
+    QElapsedTimer m_clock;
+    qint64 m_lastWallUs = 0;
+    double m_simulatedUs = 0; // how far the drive should have got
+    QByteArray m_backlog;     // bytes the drive sent that the "wire" has not carried yet
+    double m_byteCredit = 0;  // baud pacing: bytes the wire may carry now
+};
+
+} // namespace serialport
