@@ -13,7 +13,7 @@ const QString kIgnored = QStringLiteral("ERROR MSG WAITING--COMMAND IGNORED");
 Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
     qRegisterMetaType<Bds5Response>();
     m_silence.setSingleShot(true);
-    m_silence.setInterval(kPromptSilenceMs);
+    m_silence.setInterval(m_link.quietMs());
     m_timeout.setSingleShot(true);
     m_wake.setSingleShot(true);
     m_wake.setInterval(kWakeAfterMs);

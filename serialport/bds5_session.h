@@ -42,9 +42,6 @@ public:
     QString lastPrompt() const { return m_prompt; }
     Link& link() { return m_link; }
 
-    // How long the drive may stay silent after a prompt-shaped tail before the prompt counts (§2.10 rule 6).
-    static constexpr int kPromptSilenceMs = 15;
-
 signals:
     void rawReceived(const QByteArray& bytes); // every byte from the drive, for the terminal and captures
     void modeChanged(serialport::Bds5Mode mode, const QString& prompt);

@@ -24,6 +24,9 @@ public:
     virtual QString description() const = 0;
     // Bits per second on the wire, 0 when not limited; sessions derive their time-outs from it.
     virtual int baudRate() const = 0;
+    // How long the line must stay quiet after a prompt-shaped tail before a session trusts it is a prompt
+    // (§2.10 rule 6). USB serial adapters deliver in bursts up to 16 ms apart (FTDI latency timer).
+    virtual int quietMs() const { return 20; }
 
 signals:
     void opened();

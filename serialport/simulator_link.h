@@ -33,6 +33,8 @@ public:
     void write(const QByteArray& bytes) override;
     QString description() const override;
     int baudRate() const override { return m_options.baudRate; }
+    // The worker hands bytes over every 1 ms tick: a few ticks of silence is a pause.
+    int quietMs() const override { return 4; }
 
 private:
     drive_core::DriveFamily m_family;

@@ -31,8 +31,8 @@ constexpr std::array kCommands{
                                "positive edge).",
                 .manualLines = "L6568-6593, L3728-3747, L4603-4615"},
     CommandInfo{.name = "?", .longName = "QUICK IF",
-                .syntax = "? <expr> <logical> <expr> [instruction] [: instruction]",
-                .modes = kAll, .minEntries = 4, .maxEntries = 14,
+                .syntax = "? <expr> <logical> <expr> [instruction] [: instruction]", .modes = kAll,
+                .minEntries = 4, .maxEntries = 14,
                 .description = "Conditionally executes one instruction if the condition is true, and "
                                "another (after :) if it is false; either may be omitted but not both. The "
                                "instruction may be any instruction except TIL (ERR 117). Logical is GT, GE, "
@@ -135,8 +135,8 @@ constexpr std::array kCommands{
                                "Allowed from the user program.",
                 .manualLines = "L6768-6783, L3938-4103"},
     CommandInfo{.name = "INPUT", .longName = "INPUT",
-                .syntax = "INPUT \"<text>\" <variable>[decimal] [min max]",
-                .modes = kProgram, .minEntries = 2, .maxEntries = 4, .idling = true,
+                .syntax = "INPUT \"<text>\" <variable>[decimal] [min max]", .modes = kProgram,
+                .minEntries = 2, .maxEntries = 4, .idling = true,
                 .description = "Print the text and wait for the operator to type a number and Enter; the "
                                "value is multiplied by 10^decimal and kept within min/max (both or neither) "
                                "or the variable's limits. Any programmable variable. Idling. Allowed only "
@@ -251,8 +251,8 @@ constexpr std::array kCommands{
                                "One task at a time (ERR 62). Allowed only from the user program.",
                 .manualLines = "L6999-7009, L5823-5839"},
     CommandInfo{.name = "RECORD", .longName = "RECORD",
-                .syntax = "RECORD <number> <time> <var1> [var2 var3 var4]",
-                .modes = kTerminalAndProgram, .minEntries = 3, .maxEntries = 6,
+                .syntax = "RECORD <number> <time> <var1> [var2 var3 var4]", .modes = kTerminalAndProgram,
+                .minEntries = 3, .maxEntries = 6,
                 .description = "Record 1-4 variables every <time> ms for <number> intervals (at most 1000 "
                                "points in all: 1000/500/333/250). PE, REMOTE, TMR1-TMR4, VAVG, VXAVG and "
                                "user switches cannot be recorded. Allowed from the user program or the "
@@ -264,8 +264,8 @@ constexpr std::array kCommands{
                                "user program.",
                 .manualLines = "L7039-7043"},
     CommandInfo{.name = "RS", .longName = "REFRESH WITH STATUS",
-                .syntax = "RS <expr>[format] | \"<text>\" ...",
-                .modes = kAll, .minEntries = 0, .maxEntries = 14,
+                .syntax = "RS <expr>[format] | \"<text>\" ...", .modes = kAll, .minEntries = 0,
+                .maxEntries = 14,
                 .description = "Refresh screen with status: identical to R except the status of the drive "
                                "is displayed at the end of the printed line.",
                 .manualLines = "L7045-7047"},
@@ -335,8 +335,8 @@ constexpr std::array kCommands{
                                "line feed.",
                 .manualLines = "L9305, L10111"},
     CommandInfo{.name = "PAS", .longName = "PRINT APPEND STATUS",
-                .syntax = "PAS <expr>[format] | \"<text>\" ...",
-                .modes = kAll, .minEntries = 0, .maxEntries = 14, .version3 = true,
+                .syntax = "PAS <expr>[format] | \"<text>\" ...", .modes = kAll, .minEntries = 0,
+                .maxEntries = 14, .version3 = true,
                 .description = "Print Append Status: identical to PA except it also prints the drive "
                                "status; no terminating CR LF.",
                 .manualLines = "L9306, L10112"},

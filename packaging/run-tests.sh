@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Quick start 2: install what the tests need, build, and run every test with CTest (GUI tests run under
+# Xvfb by themselves). .ci/run calls exactly this.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+bash "$here/install-deps.sh" --tests
+start=$(date +%s)
+bash "$here/build.sh"
+echo "build: $(( $(date +%s) - start )) s on $(nproc) cores"
+cd "$here/.."
+ctest --preset default -j "$(nproc)"

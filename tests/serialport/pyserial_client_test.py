@@ -1,0 +1,47 @@
+#!/usr/bin/python3
+"""A client nobody here wrote (pyserial) talks to servodesk-sim --pty like a terminal program would."""
+import subprocess
+import sys
+import time
+
+import serial  # Debian's python3-serial
+
+
+def read_until(port, marker, timeout_s=5.0):
+    data = b""
+    deadline = time.monotonic() + timeout_s
+    while marker not in data and time.monotonic() < deadline:
+        data += port.read(port.in_waiting or 1)
+    if marker not in data:
+        raise AssertionError(f"did not see {marker!r}; got {data!r}")
+    return data
+
+
+def main(sim):
+    proc = subprocess.Popen([sim, "--drive", "bds5", "--pty"], stdout=subprocess.PIPE)
+    try:
+        first = proc.stdout.readline().decode().strip()
+        assert first.startswith("PTY /dev/"), first
+        with serial.Serial(first[4:], 9600, timeout=0.2) as port:
+            signon = read_until(port, b"\r\n-->")
+            assert b"BDS5" in signon, signon
+            port.write(b'P "HELLO, WORLD"\r')
+            answer = read_until(port, b"HELLO, WORLD\r\n-->")
+            assert answer == b'P "HELLO, WORLD"\r\nHELLO, WORLD\r\n-->', answer
+            port.write(b"X1=1000\r")
+            assert read_until(port, b"\r\n-->") == b"X1=1000\r\n-->"
+            port.write(b"P X1\r")
+            answer = read_until(port, b"\r\n-->")
+            assert answer == b"P X1\r\n        1000\r\n-->", answer
+            port.write(b"BOGUS\r")
+            answer = read_until(port, b"INVALID INSTRUCTION\r\n-->")
+            assert b"\x07ERR 80 'BOGUS'" in answer, answer
+    finally:
+        proc.terminate()
+        proc.wait(5)
+    print("pyserial client: 4 passed, 0 failed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
