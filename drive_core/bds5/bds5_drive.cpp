@@ -1,4 +1,4 @@
-// The simulated BDS5's serial line discipline: echo, CR handling, prompts, held errors.
+// The simulated BDS5's serial line discipline and processor modes.
 #include "bds5_drive.h"
 
 #include <utility>
@@ -12,7 +12,12 @@ constexpr char kEscape = '\x1b';
 constexpr char kCtrlX = '\x18';
 constexpr char kDelete = '\x7f';
 constexpr std::string_view kCrLf = "\r\n";
-constexpr std::string_view kPrompt = "-->"; // interactive mode, single-drop (Table 2.2)
+// Single-drop prompts (Table 2.2, §2.3); multidrop prefixes come with the serial issue.
+constexpr std::string_view kInteractivePrompt = "-->";
+constexpr std::string_view kMonitorPrompt = "==>";
+constexpr std::string_view kLoadPrompt = "l->";
+// Error lines after a command, or out of a running program, follow CR LF LF (L9802-9806, L9857-9861).
+constexpr std::string_view kErrorPreamble = "\r\n\n";
 } // namespace
 
 Bds5Drive::Bds5Drive() = default;
@@ -21,18 +26,27 @@ void Bds5Drive::powerUp() {
     m_state.variables.powerUp();
     m_state.enabled = false;
     logError(m_state, 199); // DRIVE POWERED UP is logged at every power-up (L6118, L7503)
+    m_executor.stop();
+    m_mode = Bds5DriveMode::Interactive;
     m_received.clear();
     m_line.clear();
     m_heldErrors.clear();
     m_outputs.fill(false);
     m_time = Microseconds{0};
     m_powered = true;
-    m_promptPending = false;
+    m_promptPending = m_breakPending = false;
     // ABAUD off and MOTION on: no autobaud, the sign-on goes out at once (digest §2.2).
     if (switchOn("MSG", true)) {
         transmit(kCrLf);
         transmit(kSignOn);
         transmit(kCrLf);
+    }
+    if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::PowerUp);
+        line && !m_state.program.check()) {
+        transmit("EXECUTING POWER-UP LABEL\r\n"); // L4939-4944
+        m_executor.start(*line, m_time);
+        m_mode = Bds5DriveMode::Running;
+        return;
     }
     sendPrompt();
 }
@@ -44,9 +58,18 @@ std::string Bds5Drive::takeTransmitted() { return std::exchange(m_transmitted, {
 void Bds5Drive::step(Microseconds dt) {
     m_time += dt;
     if (!m_powered) return;
-    // The command processor handles everything received; instructions here take no simulated time yet.
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
+    if (!m_executor.running()) return;
+    std::string out;
+    std::optional<Bds5Error> error;
+    const ProgramStop stop = m_executor.advance(m_time, out, error);
+    if (m_mode == Bds5DriveMode::Running) transmit(out); // program prints are suppressed in monitor mode
+    if (error && stop == ProgramStop::Running) { // a warning: message only, the program goes on
+        if (m_promptPending) m_heldErrors.push_back(*error);
+        else sendError(*error, kErrorPreamble);
+    }
+    if (stop != ProgramStop::Running) programStopped(stop, error);
 }
 
 void Bds5Drive::setInput(int number, bool on) {
@@ -63,23 +86,22 @@ bool Bds5Drive::output(int number) const {
 
 void Bds5Drive::raiseFault(int code) {
     logError(m_state, code);
-    m_heldErrors.push_back(Bds5Error{code, {}, 0});
-    if (!m_promptPending) sendHeldErrors();
+    const Bds5Error error{code, {}, 0};
+    if (m_executor.running()) programStopped(ProgramStop::Error, error); // faults break the program
+    else if (m_promptPending) m_heldErrors.push_back(error);
+    else sendError(error, kErrorPreamble);
 }
 
 void Bds5Drive::handleByte(char c) {
+    if (c == kCtrlX) return handleBreakCharacter();
+    if (c == kEscape) return handleEscape();
+    // Run mode has no prompt: the drive takes no input but its attention characters (L1254).
+    if (m_mode == Bds5DriveMode::Running) return;
     const bool echo = switchOn("ECHO", true);
     switch (c) {
     case '\r':
         if (echo) transmit(kCrLf);
         endOfLine();
-        return;
-    case kEscape: // in interactive mode Esc answers like CR; the partial line is dropped (chosen)
-        transmit(kCrLf);
-        abortLine();
-        return;
-    case kCtrlX: // STOP + BREAK from any mode (L2233); motion is not simulated yet
-        m_line.clear();
         return;
     case kBackspace:
     case kDelete: // line editing is not in the seed; chosen: erase the last character on screen
@@ -101,50 +123,211 @@ void Bds5Drive::handleByte(char c) {
     if (echo) transmit(std::string_view(&c, 1));
 }
 
-void Bds5Drive::endOfLine() {
-    const std::string line = std::exchange(m_line, {});
-    m_promptPending = false;
-    if (!m_heldErrors.empty()) {
-        if (line.find_first_not_of(" \t") != std::string::npos) {
-            // A command typed while an error waits is ignored (L9721-9739).
-            transmit("ERROR MSG WAITING--COMMAND IGNORED\r\n\r\n\n");
+// Esc (§2.5): interactive — like CR; run — enter monitor mode; monitor — back to run; load — end of load.
+void Bds5Drive::handleEscape() {
+    m_line.clear();
+    const bool messages = switchOn("MSG", true);
+    switch (m_mode) {
+    case Bds5DriveMode::Interactive:
+        transmit(kCrLf);
+        m_promptPending = false;
+        sendHeldErrors("");
+        sendPrompt();
+        return;
+    case Bds5DriveMode::Running:
+        transmit(messages ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "\r\n"); // L9757-9776
+        m_mode = Bds5DriveMode::Monitor;
+        sendPrompt();
+        return;
+    case Bds5DriveMode::Monitor:
+        if (m_breakPending) { // the program has already stopped: Esc answers with the held news
+            transmit(kCrLf);
+            m_promptPending = false;
+            sendHeldErrors("\n");
+            m_mode = Bds5DriveMode::Interactive;
+            m_breakPending = false;
+            sendPrompt();
+            return;
         }
-        sendHeldErrors();
+        // The manual prints the leave-monitor answer as "<cr><lf>ENTER MONITOR MODE." (L9767-9768).
+        transmit(messages ? "\r\nENTER MONITOR MODE." : "\r\n");
+        m_atLineStart = false;
+        m_promptPending = false;
+        m_mode = Bds5DriveMode::Running;
+        return;
+    case Bds5DriveMode::ProgramLoad:
+        transmit(kCrLf);
+        m_mode = Bds5DriveMode::Interactive;
         sendPrompt();
         return;
     }
-    std::string out;
-    std::optional<Bds5Error> error;
+}
+
+// ^X: STOP + BREAK from any mode, even while a program runs (L2233-2235, L9868).
+void Bds5Drive::handleBreakCharacter() {
+    m_line.clear();
+    if (m_mode == Bds5DriveMode::Running || m_mode == Bds5DriveMode::Monitor) {
+        m_executor.stop();
+        m_mode = Bds5DriveMode::Interactive;
+        m_breakPending = false;
+        m_promptPending = false;
+        sendPrompt();
+    }
+}
+
+void Bds5Drive::endOfLine() {
+    std::string line = std::exchange(m_line, {});
+    m_promptPending = false;
+    if (m_mode == Bds5DriveMode::ProgramLoad) return loadLine(std::move(line));
+    if (!m_heldErrors.empty() || m_breakPending) {
+        // A command typed while an error waits is ignored (L9721-9739, L9921-9935).
+        const bool typed = line.find_first_not_of(" \t") != std::string::npos;
+        if (typed && !m_heldErrors.empty()) transmit("ERROR MSG WAITING--COMMAND IGNORED\r\n\r\n\n");
+        sendHeldErrors(m_mode == Bds5DriveMode::Monitor && !typed ? "\n" : "");
+        if (m_breakPending) {
+            m_breakPending = false;
+            m_mode = Bds5DriveMode::Interactive;
+        }
+        sendPrompt();
+        return;
+    }
+    if (m_mode == Bds5DriveMode::Monitor) return monitorLine(line);
+    interactiveLine(line);
+}
+
+void Bds5Drive::interactiveLine(const std::string& line) {
     auto lexed = lexLine(line);
-    if (auto* e = std::get_if<Bds5Error>(&lexed)) error = *e;
-    else error = m_interpreter.execute(std::get<LexedLine>(lexed), out);
+    if (auto* e = std::get_if<Bds5Error>(&lexed)) {
+        logError(m_state, e->code);
+        sendError(*e, kErrorPreamble);
+        return sendPrompt();
+    }
+    std::string out;
+    const Outcome outcome =
+        m_interpreter.execute(std::get<LexedLine>(lexed).entries, ExecContext{Origin::Terminal, 0}, out);
     transmit(out);
-    if (error) {
-        logError(m_state, error->code);
-        transmit(std::string(1, kBell) + formatError(*error) + std::string(kCrLf));
+    if (outcome.error) {
+        logError(m_state, outcome.error->code);
+        sendError(*outcome.error, kErrorPreamble);
+        return sendPrompt();
+    }
+    applyTerminalFlow(outcome);
+}
+
+void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
+    switch (outcome.flow) {
+    case Flow::Run: return runProgram(outcome.target);
+    case Flow::Load:
+        // Passwords (PASS in the resident editor) arrive with the editor; with none set, any is accepted.
+        m_mode = Bds5DriveMode::ProgramLoad;
+        m_loadStarted = false;
+        m_promptPending = false;
+        transmit(kLoadPrompt);
+        m_promptPending = true;
+        return;
+    case Flow::List:
+        for (const std::string& l : m_state.program.lines()) {
+            transmit(l);
+            transmit(kCrLf);
+        }
+        return sendPrompt();
+    default: return sendPrompt();
+    }
+}
+
+void Bds5Drive::runProgram(int label) {
+    // RUN checks the program before it starts (L3746): labels used twice, labels after ERROR$.
+    if (const auto problem = m_state.program.check()) {
+        logError(m_state, problem->code);
+        sendError(*problem, kErrorPreamble);
+        return sendPrompt();
+    }
+    int line = 1;
+    if (label >= 0) {
+        const auto found = m_state.program.labelLine(label);
+        if (!found) {
+            logError(m_state, 70);
+            sendError(Bds5Error{70, std::to_string(label), 0}, kErrorPreamble);
+            return sendPrompt();
+        }
+        line = *found;
+    } else {
+        // RUN alone enables multitasking without a main routine (L4595-4601); tasks come with issue 3.
+        return;
+    }
+    m_executor.start(line, m_time);
+    m_mode = Bds5DriveMode::Running; // no prompt while the program runs
+}
+
+void Bds5Drive::monitorLine(const std::string& line) {
+    auto lexed = lexLine(line);
+    std::string out;
+    Outcome outcome;
+    if (auto* e = std::get_if<Bds5Error>(&lexed)) outcome.error = *e;
+    else outcome = m_interpreter.execute(std::get<LexedLine>(lexed).entries, ExecContext{Origin::Monitor, 0}, out);
+    transmit(out);
+    if (outcome.error) {
+        logError(m_state, outcome.error->code);
+        sendError(*outcome.error, kErrorPreamble);
+    }
+    // S, B and K typed in monitor mode break the program: back to interactive (L9778-9797).
+    if (outcome.flow == Flow::Break || outcome.flow == Flow::Stop || outcome.flow == Flow::Kill) {
+        m_executor.stop();
+        m_mode = Bds5DriveMode::Interactive;
     }
     sendPrompt();
 }
 
-void Bds5Drive::abortLine() {
-    m_line.clear();
-    m_promptPending = false;
-    sendHeldErrors();
+void Bds5Drive::loadLine(std::string line) {
+    if (!m_loadStarted) { // program memory is erased on the first CR-terminated line (L9957)
+        m_state.program.clear();
+        m_loadStarted = true;
+    }
+    if (!m_state.program.append(std::move(line))) {
+        logError(m_state, 86);
+        sendError(Bds5Error{86, ">BDS", 0}, kErrorPreamble); // USER PROGRAM FULL (L7396)
+    }
+    transmit(kLoadPrompt);
+    m_promptPending = true;
+}
+
+void Bds5Drive::programStopped(ProgramStop stop, const std::optional<Bds5Error>& error) {
+    m_executor.stop();
+    if (stop == ProgramStop::Kill) m_state.enabled = false;
+    if (m_mode == Bds5DriveMode::Monitor) { // the monitor prompt is up: news waits for the next CR
+        if (error) m_heldErrors.push_back(*error);
+        m_breakPending = true;
+        return;
+    }
+    if (error) sendError(*error, kErrorPreamble);
+    m_mode = Bds5DriveMode::Interactive;
     sendPrompt();
 }
 
-void Bds5Drive::sendHeldErrors() {
-    for (const Bds5Error& e : m_heldErrors) transmit(std::string(1, kBell) + formatError(e) + std::string(kCrLf));
+void Bds5Drive::sendError(const Bds5Error& error, std::string_view preamble) {
+    transmit(preamble);
+    transmit(std::string(1, kBell) + formatError(error) + std::string(kCrLf));
+}
+
+void Bds5Drive::sendHeldErrors(std::string_view preamble) {
+    for (const Bds5Error& e : m_heldErrors) sendError(e, preamble);
     m_heldErrors.clear();
 }
 
 void Bds5Drive::sendPrompt() {
-    // Every prompt follows a CR LF already sent; PROMPT OFF suppresses it (L1550, L5320-5326).
-    if (switchOn("PROMPT", true)) transmit(kPrompt);
+    if (!m_atLineStart) transmit(kCrLf); // every prompt follows CR LF (L9609)
+    const std::string_view prompt = m_mode == Bds5DriveMode::Monitor       ? kMonitorPrompt
+                                    : m_mode == Bds5DriveMode::ProgramLoad ? kLoadPrompt
+                                                                           : kInteractivePrompt;
+    if (switchOn("PROMPT", true)) transmit(prompt); // PROMPT OFF suppresses it (L1550, L5320-5326)
     m_promptPending = true;
 }
 
-void Bds5Drive::transmit(std::string_view bytes) { m_transmitted.append(bytes); }
+void Bds5Drive::transmit(std::string_view bytes) {
+    if (bytes.empty()) return;
+    m_transmitted.append(bytes);
+    m_atLineStart = bytes.back() == '\n';
+}
 
 bool Bds5Drive::switchOn(std::string_view name, bool fallback) const {
     const auto v = m_state.variables.read(name);

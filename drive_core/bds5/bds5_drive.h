@@ -1,7 +1,9 @@
-// The simulated Kollmorgen BDS5: its serial port behaviour (echo, prompts, held errors) around the
-// interpreter. Byte for byte what the manual's transcripts show (seed-bds5 §2.3-2.4).
+// The simulated Kollmorgen BDS5: its serial port behaviour (echo, prompts, held errors), its processor
+// modes (interactive, run, monitor, program load) and the program executor. Byte for byte what the
+// manual's transcripts show (seed-bds5 §2.3-2.6, §3).
 #pragma once
 
+#include "bds5_executor.h"
 #include "bds5_interpreter.h"
 #include "drive_core/drive.h"
 
@@ -14,6 +16,8 @@ namespace drive_core::bds5 {
 // The sign-on text is not in the seed (digest §2.2); chosen to name the drive, the firmware level the
 // simulator follows (v3.0.0) and that it is a simulation, so no user mistakes it for hardware.
 inline constexpr std::string_view kSignOn = "BDS5 DIGITAL SERVO DRIVE  V3.0.0  (SERVODESK SIMULATION)";
+
+enum class Bds5DriveMode { Interactive, Running, Monitor, ProgramLoad };
 
 class Bds5Drive final : public Drive {
 public:
@@ -36,25 +40,39 @@ public:
     // next sends CR or Esc, never while a prompt is pending (L9712-9739).
     void raiseFault(int code);
 
+    Bds5DriveMode mode() const { return m_mode; }
     bool promptPending() const { return m_promptPending; }
     const Bds5State& state() const { return m_state; }
 
 private:
     void handleByte(char c);
+    void handleEscape();
+    void handleBreakCharacter();
     void endOfLine();
-    void abortLine();
-    void sendHeldErrors();
+    void interactiveLine(const std::string& line);
+    void monitorLine(const std::string& line);
+    void loadLine(std::string line);
+    void applyTerminalFlow(const Outcome& outcome);
+    void runProgram(int label);
+    void programStopped(ProgramStop stop, const std::optional<Bds5Error>& error);
+    void sendError(const Bds5Error& error, std::string_view preamble);
+    void sendHeldErrors(std::string_view preamble);
     void sendPrompt();
     void transmit(std::string_view bytes);
     bool switchOn(std::string_view name, bool fallback) const;
 
     Bds5State m_state;
     Bds5Interpreter m_interpreter{m_state};
+    Bds5Executor m_executor{m_state, m_interpreter};
+    Bds5DriveMode m_mode = Bds5DriveMode::Interactive;
     std::string m_received;    // UART receive buffer, not yet processed
     std::string m_transmitted; // UART transmit buffer, not yet taken by the host side
     std::string m_line;        // the instruction being typed
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
+    bool m_breakPending = false; // the program stopped while the monitor prompt was up
+    bool m_loadStarted = false;  // >BDS: the first line erases the program (L9957)
+    bool m_atLineStart = true;
     bool m_powered = false;
     Microseconds m_time{0};
     std::array<bool, 16> m_inputs{}; // I1-I16

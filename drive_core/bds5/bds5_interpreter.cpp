@@ -1,4 +1,4 @@
-// BDS5 instruction execution (interactive subset; the full language grows here, see issue 3).
+// BDS5 instruction execution. The full language grows here (issue 3); motion arrives with issue 4.
 #include "bds5_interpreter.h"
 
 #include "bds5_expression.h"
@@ -16,10 +16,6 @@ void logError(Bds5State& state, int code) {
 
 namespace {
 
-ExpressionResult evaluateIn(const Bds5State& state, std::string_view text) {
-    return evaluate(text, [&state](std::string_view name) { return state.variables.read(name); });
-}
-
 // "VFB[5.3]" -> expression "VFB", format "5.3"; nullopt when the brackets are malformed.
 std::optional<std::pair<std::string_view, std::string_view>> splitFormat(std::string_view item) {
     const std::size_t open = item.find('[');
@@ -28,45 +24,192 @@ std::optional<std::pair<std::string_view, std::string_view>> splitFormat(std::st
     return std::pair{item.substr(0, open), item.substr(open + 1, item.size() - open - 2)};
 }
 
+// A command typed where the catalog says it does not belong: ERR 52 from the terminal, ERR 63 from
+// monitor mode (the COM1 transcripts, L9805, L9861), ERR 53 from the program.
+int legalityError(std::string_view word, Origin origin) {
+    const cat::CommandInfo* command = cat::findCommand(word);
+    if (!command) return 0;
+    const unsigned needed = origin == Origin::Terminal  ? cat::kInteractive
+                            : origin == Origin::Monitor ? cat::kMonitor
+                                                        : cat::kProgram;
+    if (command->modes & needed) return 0;
+    return origin == Origin::Terminal ? 52 : origin == Origin::Monitor ? 63 : 53;
+}
+
+std::string joined(std::span<const Entry> entries) {
+    std::string s;
+    for (const Entry& e : entries) s += (s.empty() ? "" : " ") + e.text;
+    return s;
+}
+
 } // namespace
 
-std::optional<Bds5Error> Bds5Interpreter::execute(const LexedLine& line, std::string& out) {
-    if (line.entries.empty()) return std::nullopt;
-    if (int(line.entries.size()) > kMaxEntries) return Bds5Error{82, line.entries.back().text, 0};
-    const Entry& first = line.entries.front();
-    const std::string& word = first.text;
+std::optional<std::int32_t> Bds5Interpreter::readValue(std::string_view name) const {
+    if (name == "CHECKSUM") return m_state.program.checksum(); // P CHECKSUM after a load (L9953)
+    return m_state.variables.read(name);
+}
 
-    if (word == "P") return print(line, 1, true, out);
-    if (word == "PA") return print(line, 1, false, out);
-    if (word == "ERR") return errCommand(line, out);
-    if (word == "EN") {
-        m_state.enabled = true;
-        return std::nullopt;
+Outcome Bds5Interpreter::execute(std::span<const Entry> entries, const ExecContext& context, std::string& out) {
+    Outcome outcome = dispatch(entries, context, out);
+    if (outcome.error && context.origin == Origin::Program) outcome.error->line = context.line;
+    return outcome;
+}
+
+Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecContext& context, std::string& out) {
+    if (entries.empty()) return {};
+    if (int(entries.size()) > kMaxEntries) return {Bds5Error{82, entries.back().text, 0}};
+    const std::string& word = entries.front().text;
+    const auto args = entries.subspan(1);
+
+    if (const int error = legalityError(word, context.origin)) return {Bds5Error{error, joined(entries), 0}};
+    if (word == "?") return quickIf(entries, context, out);
+    if (word == "TIL") return til(entries, context, out);
+    if (word == "IF" || word == "ELIF") {
+        if (args.size() != 3) return {Bds5Error{82, joined(entries), 0}};
+        std::optional<Bds5Error> error;
+        const auto c = condition(args, error);
+        if (!c) return {error};
+        return {std::nullopt, word == "IF" ? Flow::If : Flow::Elif, 0, *c};
     }
-    if (word == "DIS" || word == "K") {
-        m_state.enabled = false;
-        return std::nullopt;
+    if (word == "ELSE" || word == "ENDIF" || word == "RET" || word == "END" || word == "B" || word == "S" ||
+        word == "K" || word == "<BDS") {
+        if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
+        if (word == "K") m_state.enabled = false;
+        const Flow flow = word == "ELSE"    ? Flow::Else
+                          : word == "ENDIF" ? Flow::Endif
+                          : word == "RET"   ? Flow::Return
+                          : word == "END"   ? Flow::End
+                          : word == "B"     ? Flow::Break
+                          : word == "S"     ? Flow::Stop
+                          : word == "K"     ? Flow::Kill
+                                            : Flow::List;
+        return {std::nullopt, flow};
     }
-    // Assignment: VAR=expr, VAR expr, VAR = expr (L1437-1448).
-    if (word.find('=') != std::string::npos || cat::findVariable(word)) return assign(line);
+    if (word == "GOTO") return jump(Flow::Goto, entries);
+    if (word == "GOSUB") return jump(Flow::Gosub, entries);
+    if (word == "RUN") {
+        if (args.empty()) return {std::nullopt, Flow::Run, -1};
+        return jump(Flow::Run, entries);
+    }
+    if (word == ">BDS") {
+        if (args.size() > 1) return {Bds5Error{82, args[1].text, 0}};
+        return {std::nullopt, Flow::Load, 0, false, args.empty() ? std::string() : args.front().text};
+    }
+    if (word == "D") {
+        if (args.size() != 1) return {Bds5Error{82, joined(entries), 0}};
+        const ExpressionResult r = evaluate(args.front().text, [this](auto n) { return readValue(n); });
+        if (r.error) return {Bds5Error{r.error, args.front().text, 0}};
+        if (r.value < 0) return {Bds5Error{83, args.front().text, 0}};
+        return {std::nullopt, Flow::Dwell, r.value};
+    }
+    if (word == "P" || word == "PS") return {print(entries, true, out)};
+    if (word == "PA" || word == "PAS") return {print(entries, false, out)};
+    if (word == "ERR") return {errCommand(entries, out)};
+    if (word == "EN" || word == "DIS") {
+        if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
+        m_state.enabled = word == "EN";
+        return {};
+    }
+    if (word == "CLEARX") { // v3: zero X1-X750 and XS1-XS50 (L9308)
+        for (int i = 1; i <= 250; ++i) m_state.variables.set("X" + std::to_string(i), 0);
+        for (int i = 1; i <= 50; ++i) m_state.variables.set("XS" + std::to_string(i), 0);
+        return {};
+    }
+    if (word.find('=') != std::string::npos || cat::findVariable(word)) return {assign(entries)};
     // Known commands whose behaviour is not simulated yet answer as an unknown instruction would.
-    return Bds5Error{80, word, 0};
+    return {Bds5Error{80, word, 0}};
+}
+
+// ? cond [TRUE-instr] [: FALSE-instr] — either instruction may be omitted but not both (L3836-3900).
+Outcome Bds5Interpreter::quickIf(std::span<const Entry> entries, const ExecContext& context, std::string& out) {
+    if (entries.size() < 5) return {Bds5Error{82, joined(entries), 0}};
+    std::optional<Bds5Error> error;
+    const auto c = condition(entries.subspan(1, 3), error);
+    if (!c) return {error};
+    auto rest = entries.subspan(4);
+    std::size_t colon = 0;
+    while (colon < rest.size() && rest[colon].text != ":") ++colon;
+    auto whenTrue = rest.subspan(0, colon);
+    auto whenFalse = colon < rest.size() ? rest.subspan(colon + 1) : std::span<const Entry>{};
+    if (whenTrue.empty() && whenFalse.empty()) return {Bds5Error{82, joined(entries), 0}};
+    for (const auto& part : {whenTrue, whenFalse})
+        if (!part.empty() && part.front().text == "TIL") return {Bds5Error{117, part.front().text, 0}};
+    const auto chosen = *c ? whenTrue : whenFalse;
+    if (chosen.empty()) return {};
+    return dispatch(chosen, context, out);
+}
+
+// TIL cond [instr] — while cond is false, run instr (if any) and come back to this line (L3902-3936).
+Outcome Bds5Interpreter::til(std::span<const Entry> entries, const ExecContext& context, std::string& out) {
+    if (entries.size() < 4) return {Bds5Error{82, joined(entries), 0}};
+    std::optional<Bds5Error> error;
+    const auto c = condition(entries.subspan(1, 3), error);
+    if (!c) return {error};
+    if (*c) return {};
+    const auto instruction = entries.subspan(4);
+    if (!instruction.empty()) {
+        if (instruction.front().text == "TIL" || instruction.front().text == "?")
+            return {Bds5Error{117, instruction.front().text, 0}};
+        Outcome inner = dispatch(instruction, context, out);
+        if (inner.error || inner.flow != Flow::Next) return inner;
+    }
+    return {std::nullopt, Flow::Repeat};
+}
+
+// GOTO|GOSUB|RUN <label> | <Xn> — the target label number; the executor checks that it exists.
+Outcome Bds5Interpreter::jump(Flow flow, std::span<const Entry> entries) {
+    if (entries.size() != 2) return {Bds5Error{82, joined(entries), 0}};
+    // The manual writes targets both as "GOTO 3" and "GOTO 3$" (L3771-3811): accept the '$'.
+    std::string_view target = entries[1].text;
+    if (target.size() > 1 && target.back() == '$') target.remove_suffix(1);
+    const ExpressionResult r = evaluate(target, [this](auto n) { return readValue(n); });
+    if (r.error) return {Bds5Error{r.error, entries[1].text, 0}};
+    if (r.value < 0 || r.value > kMaxLabel) return {Bds5Error{83, entries[1].text, 0}};
+    return {std::nullopt, flow, r.value};
+}
+
+std::optional<bool> Bds5Interpreter::condition(std::span<const Entry> entries,
+                                               std::optional<Bds5Error>& error) const {
+    if (entries.size() < 3) {
+        error = Bds5Error{82, entries.empty() ? std::string() : entries.front().text, 0};
+        return std::nullopt;
+    }
+    const std::string& op = entries[1].text;
+    if (op != "GT" && op != "GE" && op != "LT" && op != "LE" && op != "EQ" && op != "NE") {
+        error = Bds5Error{83, op, 0};
+        return std::nullopt;
+    }
+    const auto reader = [this](auto n) { return readValue(n); };
+    const ExpressionResult a = evaluate(entries[0].text, reader);
+    if (a.error) {
+        error = Bds5Error{a.error, entries[0].text, 0};
+        return std::nullopt;
+    }
+    const ExpressionResult b = evaluate(entries[2].text, reader);
+    if (b.error) {
+        error = Bds5Error{b.error, entries[2].text, 0};
+        return std::nullopt;
+    }
+    if (op == "GT") return a.value > b.value;
+    if (op == "GE") return a.value >= b.value;
+    if (op == "LT") return a.value < b.value;
+    if (op == "LE") return a.value <= b.value;
+    if (op == "EQ") return a.value == b.value;
+    return a.value != b.value;
 }
 
 // P item item ... — texts verbatim, expressions formatted, no separators added (L4191-4358).
-std::optional<Bds5Error> Bds5Interpreter::print(const LexedLine& line, std::size_t first, bool terminate,
-                                                std::string& out) {
-    if (line.entries.size() <= first) return Bds5Error{82, line.entries.front().text, 0};
+std::optional<Bds5Error> Bds5Interpreter::print(std::span<const Entry> entries, bool terminate, std::string& out) {
+    if (entries.size() < 2) return Bds5Error{82, entries.front().text, 0};
     std::string text;
-    for (std::size_t i = first; i < line.entries.size(); ++i) {
-        const Entry& item = line.entries[i];
+    for (const Entry& item : entries.subspan(1)) {
         if (item.quoted) {
             text += expandControlCharacters(std::string_view(item.text).substr(1, item.text.size() - 2));
             continue;
         }
         const auto parts = splitFormat(item.text);
         if (!parts) return Bds5Error{79, item.text, 0};
-        const ExpressionResult r = evaluateIn(m_state, parts->first);
+        const ExpressionResult r = evaluate(parts->first, [this](auto n) { return readValue(n); });
         if (r.error) return Bds5Error{r.error, item.text, 0};
         const auto formatted = formatValue(r.value, parts->second);
         if (!formatted) return Bds5Error{79, item.text, 0};
@@ -77,11 +220,11 @@ std::optional<Bds5Error> Bds5Interpreter::print(const LexedLine& line, std::size
     return std::nullopt;
 }
 
-// assignment := VAR '=' expr | VAR expr | VAR '=' | VAR '=' expr (with blanks around '=')
-std::optional<Bds5Error> Bds5Interpreter::assign(const LexedLine& line) {
+// assignment := VAR '=' expr | VAR expr | VAR '=' expr (with blanks around '=')
+std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries) {
     std::string name;
     std::string expression;
-    const std::string& first = line.entries.front().text;
+    const std::string& first = entries.front().text;
     const std::size_t eq = first.find('=');
     std::size_t next = 1;
     if (eq != std::string::npos) {
@@ -89,17 +232,22 @@ std::optional<Bds5Error> Bds5Interpreter::assign(const LexedLine& line) {
         expression = first.substr(eq + 1);
     } else {
         name = first;
-        if (next < line.entries.size() && line.entries[next].text == "=") ++next;
+        if (next < entries.size() && entries[next].text == "=") ++next;
     }
     if (expression.empty()) {
-        if (next >= line.entries.size()) return Bds5Error{82, first, 0};
-        if (line.entries[next].text.starts_with("=")) expression = line.entries[next].text.substr(1);
-        else expression = line.entries[next].text;
+        if (next >= entries.size()) return Bds5Error{82, first, 0};
+        expression = entries[next].text.starts_with("=") ? entries[next].text.substr(1) : entries[next].text;
         ++next;
     }
-    if (next != line.entries.size()) return Bds5Error{82, line.entries[next].text, 0};
+    if (next != entries.size()) return Bds5Error{82, entries[next].text, 0};
+    if (name.starts_with("X(") && name.back() == ')') { // X(Xn) = expr (L9548)
+        const ExpressionResult index = evaluate(name.substr(2, name.size() - 3), [this](auto n) { return readValue(n); });
+        if (index.error) return Bds5Error{index.error, name, 0};
+        if (index.value < 1 || index.value > 250) return Bds5Error{85, name, 0};
+        name = "X" + std::to_string(index.value);
+    }
     if (!cat::findVariable(name)) return Bds5Error{80, name, 0};
-    const ExpressionResult r = evaluateIn(m_state, expression);
+    const ExpressionResult r = evaluate(expression, [this](auto n) { return readValue(n); });
     if (r.error) return Bds5Error{r.error, expression, 0};
     if (const int error = m_state.variables.write(name, r.value, m_state.enabled))
         return Bds5Error{error, error == 83 ? expression : name, 0};
@@ -107,9 +255,9 @@ std::optional<Bds5Error> Bds5Interpreter::assign(const LexedLine& line) {
 }
 
 // ERR <n> | ERR HIST | ERR CLR (L6110-6148, L6711-6727)
-std::optional<Bds5Error> Bds5Interpreter::errCommand(const LexedLine& line, std::string& out) {
-    if (line.entries.size() != 2) return Bds5Error{82, line.entries.front().text, 0};
-    const std::string& arg = line.entries[1].text;
+std::optional<Bds5Error> Bds5Interpreter::errCommand(std::span<const Entry> entries, std::string& out) {
+    if (entries.size() != 2) return Bds5Error{82, entries.front().text, 0};
+    const std::string& arg = entries[1].text;
     if (arg == "CLR") {
         m_state.errorHistory.clear();
         return std::nullopt;
@@ -122,7 +270,7 @@ std::optional<Bds5Error> Bds5Interpreter::errCommand(const LexedLine& line, std:
         }
         return std::nullopt;
     }
-    const ExpressionResult r = evaluateIn(m_state, arg);
+    const ExpressionResult r = evaluate(arg, [this](auto n) { return readValue(n); });
     if (r.error) return Bds5Error{r.error, arg, 0};
     if (r.value < 1 || r.value > 999) return Bds5Error{83, arg, 0};
     const cat::ErrorInfo* info = cat::findError(r.value);

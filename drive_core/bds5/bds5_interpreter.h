@@ -1,13 +1,16 @@
-// Executes one lexed BDS5 instruction against the drive's state. It never parses characters (the
-// lexer and expression evaluator do) and never touches the UART (the drive frames the output).
+// Executes one BDS5 instruction (a span of lexed entries) against the drive's state. It never parses
+// characters (the lexer and expression evaluator do), never touches the UART (the drive frames output)
+// and never moves a program counter: control flow comes back as an Outcome for the executor to apply.
 #pragma once
 
 #include "bds5_error.h"
 #include "bds5_lexer.h"
+#include "bds5_program.h"
 #include "bds5_variable_store.h"
 
 #include <deque>
 #include <optional>
+#include <span>
 #include <string>
 
 namespace drive_core::bds5 {
@@ -15,6 +18,7 @@ namespace drive_core::bds5 {
 // State the interpreter reads and changes; owned by Bds5Drive.
 struct Bds5State {
     Bds5VariableStore variables;
+    Bds5Program program;
     std::deque<int> errorHistory; // ERR HIST, newest first, at most 20 entries (L6110-6148)
     bool enabled = false;         // drive enabled (EN) / inhibited (DIS, K)
 };
@@ -24,18 +28,61 @@ constexpr std::size_t kErrorHistorySize = 20;
 // Appends an error number to the history (newest first, 20 entries).
 void logError(Bds5State& state, int code);
 
+// Where an instruction comes from; decides which commands are legal (App. C "Modes").
+enum class Origin { Terminal, Monitor, Program };
+
+struct ExecContext {
+    Origin origin = Origin::Terminal;
+    int line = 0; // program line number (Origin::Program)
+};
+
+// What the instruction asks of whoever runs it.
+enum class Flow {
+    Next,     // go on with the next line
+    Goto,     // target = label line's label
+    Gosub,    // target = label
+    Return,   // RET
+    End,      // END: this task ends
+    Break,    // B: all tasks stop, back to interactive
+    Kill,     // K: disable and break
+    Stop,     // S: stop motion (and, from monitor, break)
+    Repeat,   // TIL not yet satisfied: run this line again
+    Dwell,    // D: idle for target milliseconds
+    Run,      // RUN [label]: target = label, or -1 for "enable multitasking only"
+    Load,     // >BDS [password]: text = password
+    List,     // <BDS
+    If,       // IF c: condition
+    Elif,     // ELIF c: condition
+    Else,
+    Endif,
+};
+
+struct Outcome {
+    std::optional<Bds5Error> error;
+    Flow flow = Flow::Next;
+    int target = 0;
+    bool condition = false;
+    std::string text;
+};
+
 class Bds5Interpreter {
 public:
     explicit Bds5Interpreter(Bds5State& state) : m_state(state) {}
 
-    // Runs an interactive instruction. Output text (already with CR LF line ends) is appended to out.
-    // Returns the error the drive reports, if any.
-    std::optional<Bds5Error> execute(const LexedLine& line, std::string& out);
+    // Runs one instruction. Printed text (with its CR LF line ends) is appended to out.
+    Outcome execute(std::span<const Entry> entries, const ExecContext& context, std::string& out);
 
 private:
-    std::optional<Bds5Error> print(const LexedLine& line, std::size_t first, bool terminate, std::string& out);
-    std::optional<Bds5Error> assign(const LexedLine& line);
-    std::optional<Bds5Error> errCommand(const LexedLine& line, std::string& out);
+    Outcome dispatch(std::span<const Entry> entries, const ExecContext& context, std::string& out);
+    Outcome quickIf(std::span<const Entry> entries, const ExecContext& context, std::string& out);
+    Outcome til(std::span<const Entry> entries, const ExecContext& context, std::string& out);
+    Outcome jump(Flow flow, std::span<const Entry> entries);
+    std::optional<Bds5Error> print(std::span<const Entry> entries, bool terminate, std::string& out);
+    std::optional<Bds5Error> assign(std::span<const Entry> entries);
+    std::optional<Bds5Error> errCommand(std::span<const Entry> entries, std::string& out);
+    // cond := expr ('GT'|'GE'|'LT'|'LE'|'EQ'|'NE') expr — three entries starting at entries[0].
+    std::optional<bool> condition(std::span<const Entry> entries, std::optional<Bds5Error>& error) const;
+    std::optional<std::int32_t> readValue(std::string_view name) const;
 
     Bds5State& m_state;
 };

@@ -16,8 +16,9 @@ using enum Persistence;
 using U = UnitClass;
 using G = VariableGroup;
 
-// Values are stored in basic units (§5.8): with the standard units ACC = RPM/s x ANUM/ADEN (4474/1000),
-// velocities = RPM x VNUM/VDEN (44739/10), current = % x INUM/IDEN (4095/100), positions = counts.
+// Values are stored in basic units (digest §5.8). With the standard units:
+// ACC = RPM/s x ANUM/ADEN (4474/1000), velocity = RPM x VNUM/VDEN (44739/10), current = % x INUM/IDEN
+// (4095/100), position = counts.
 constexpr std::int64_t kRpm100kPerS = 447400; // 100000 RPM/s x 4474 / 1000
 constexpr std::int64_t kVmax = 33554250;      // 7500 RPM x 44739 / 10
 constexpr std::int64_t kFullCurrent = 4095;   // 100 % x 4095 / 100

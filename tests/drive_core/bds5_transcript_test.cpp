@@ -80,7 +80,7 @@ TEST_F(Bds5Transcript, ExpressionsFollowTheManualsExamples) {
 
 TEST_F(Bds5Transcript, UnknownCommandGivesErr80WithMessageAtColumn40) {
     const std::string entry = "ERR 80 'FOO'";
-    const std::string expected = "FOO\r\n\a" + entry + std::string(40 - entry.size(), ' ') +
+    const std::string expected = "FOO\r\n\r\n\n\a" + entry + std::string(40 - entry.size(), ' ') +
                                  "INVALID INSTRUCTION\r\n-->";
     EXPECT_EQ(type("FOO\r"), expected);
 }

@@ -1,0 +1,46 @@
+// ConnectionChoice: settings persistence and link creation.
+#include "connection_choice.h"
+
+#include "serialport/serial_port_link.h"
+#include "serialport/simulator_link.h"
+
+#include <QCoreApplication>
+#include <QSettings>
+
+namespace app {
+
+ConnectionChoice ConnectionChoice::load(QSettings& settings) {
+    ConnectionChoice choice;
+    settings.beginGroup(QStringLiteral("connection"));
+    if (settings.value(QStringLiteral("kind")).toString() == QLatin1String("serial")) choice.kind = Kind::SerialPort;
+    choice.portName = settings.value(QStringLiteral("port")).toString();
+    const int baud = settings.value(QStringLiteral("baud"), choice.baudRate).toInt();
+    if (baudRates().contains(baud)) choice.baudRate = baud;
+    settings.endGroup();
+    if (choice.kind == Kind::SerialPort && choice.portName.isEmpty()) choice.kind = Kind::Simulator;
+    return choice;
+}
+
+void ConnectionChoice::save(QSettings& settings) const {
+    settings.beginGroup(QStringLiteral("connection"));
+    settings.setValue(QStringLiteral("kind"),
+                      kind == Kind::SerialPort ? QStringLiteral("serial") : QStringLiteral("simulator"));
+    // Keep the last port even while the simulator is chosen, so the dialog can offer it again.
+    if (!portName.isEmpty()) settings.setValue(QStringLiteral("port"), portName);
+    settings.setValue(QStringLiteral("baud"), baudRate);
+    settings.endGroup();
+}
+
+std::unique_ptr<serialport::Link> ConnectionChoice::makeLink() const {
+    if (kind == Kind::SerialPort) return std::make_unique<serialport::SerialPortLink>(portName, baudRate);
+    return std::make_unique<serialport::SimulatorLink>(drive_core::DriveFamily::Bds5,
+                                                       serialport::SimulatorLink::Options{.baudRate = baudRate});
+}
+
+QString ConnectionChoice::portText() const {
+    if (kind == Kind::SerialPort)
+        return QCoreApplication::translate("app::ConnectionChoice", "%1, %2 baud").arg(portName).arg(baudRate);
+    return QCoreApplication::translate("app::ConnectionChoice", "In-process, %1 baud").arg(baudRate);
+}
+
+} // namespace app

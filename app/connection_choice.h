@@ -1,0 +1,41 @@
+// Which drive the IDE talks to: the built-in simulated BDS5 or a serial port (a real drive or a pty).
+// A value type, remembered in QSettings, that knows how to create the matching Link.
+#pragma once
+
+#include "serialport/link.h"
+
+#include <QList>
+#include <QString>
+
+#include <memory>
+
+class QSettings;
+
+namespace app {
+
+struct ConnectionChoice {
+    enum class Kind { Simulator, SerialPort };
+
+    Kind kind = Kind::Simulator;
+    QString portName;     // "/dev/ttyUSB0", "ttyS0", "/dev/pts/5"; used when kind is SerialPort
+    int baudRate = 9600;  // the serial port's rate, or the pace of the simulated drive's output
+
+    static ConnectionChoice simulator() { return {}; }
+    static ConnectionChoice serialPort(const QString& port, int baud) { return {Kind::SerialPort, port, baud}; }
+
+    // The rates the BDS5 supports (seed-bds5 §2.1).
+    static QList<int> baudRates() { return {300, 600, 1200, 2400, 4800, 9600, 19200}; }
+
+    // Settings live under "connection/"; a missing or damaged entry gives the default (the simulator).
+    static ConnectionChoice load(QSettings& settings);
+    void save(QSettings& settings) const;
+
+    // A new, unopened link for this choice.
+    std::unique_ptr<serialport::Link> makeLink() const;
+    // For the status bar: "In-process, 9600 baud" or "/dev/pts/5, 9600 baud".
+    QString portText() const;
+
+    bool operator==(const ConnectionChoice&) const = default;
+};
+
+} // namespace app

@@ -1,0 +1,52 @@
+// DriveConnection: owns and wires the link and the session.
+#include "drive_connection.h"
+
+namespace app {
+
+DriveConnection::DriveConnection(QObject* parent) : QObject(parent) {}
+
+DriveConnection::~DriveConnection() {
+    blockSignals(true); // whoever listens may be half destroyed already
+    teardown();
+}
+
+void DriveConnection::connectTo(const ConnectionChoice& choice) {
+    teardown();
+    m_choice = choice;
+    m_link = choice.makeLink();
+    m_session = std::make_unique<serialport::Bds5Session>(*m_link);
+    serialport::Link* link = m_link.get();
+    connect(link, &serialport::Link::opened, this, [this] { emit connectedChanged(true); });
+    connect(link, &serialport::Link::closed, this, [this] { emit connectedChanged(false); });
+    connect(link, &serialport::Link::errorOccurred, this, &DriveConnection::errorOccurred);
+    connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
+    connect(m_session.get(), &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
+    connect(m_session.get(), &serialport::Bds5Session::stateChanged, this, &DriveConnection::sessionStateChanged);
+    emit linkChanged();
+    link->open();
+}
+
+void DriveConnection::disconnectDrive() {
+    if (m_link) m_link->close();
+}
+
+QString DriveConnection::linkDescription() const { return m_link ? m_link->description() : QString(); }
+
+void DriveConnection::sendRaw(const QByteArray& bytes) {
+    if (!isConnected()) {
+        emit errorOccurred(tr("Not connected to a drive: nothing was sent"));
+        return;
+    }
+    m_session->sendRaw(bytes);
+}
+
+void DriveConnection::teardown() {
+    if (!m_link) return;
+    m_link->close(); // emits closed() while the session still listens, so pending commands fail cleanly
+    m_session.reset();
+    m_link->disconnect(this);
+    m_link.reset();
+    emit linkChanged();
+}
+
+} // namespace app

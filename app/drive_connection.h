@@ -1,0 +1,54 @@
+// DriveConnection: the one live connection to a drive — a Link and the Bds5Session that speaks over it.
+// Replacing the connection tears the old one down first. Re-emits what the views need as plain signals,
+// so views never hold a pointer to a link or session that may be replaced. GUI thread only.
+#pragma once
+
+#include "connection_choice.h"
+
+#include "serialport/bds5_session.h"
+#include "serialport/link.h"
+
+#include <QObject>
+
+#include <memory>
+
+namespace app {
+
+class DriveConnection final : public QObject {
+    Q_OBJECT
+public:
+    explicit DriveConnection(QObject* parent = nullptr);
+    ~DriveConnection() override;
+
+    // Closes any current connection, then creates and opens the link for choice. Errors arrive through
+    // errorOccurred(); the connection stays (closed) so the status bar can still name it.
+    void connectTo(const ConnectionChoice& choice);
+    void disconnectDrive();
+
+    bool isConnected() const { return m_link && m_link->isOpen(); }
+    bool hasLink() const { return m_link != nullptr; }
+    ConnectionChoice choice() const { return m_choice; }
+    QString linkDescription() const;
+    serialport::Bds5Session* session() const { return m_session.get(); }
+
+    // Bytes typed by the user, passed to the drive untouched. Dropped (with errorOccurred) when closed.
+    void sendRaw(const QByteArray& bytes);
+
+signals:
+    void linkChanged(); // a new link was made or the link went away: refresh its description
+    void connectedChanged(bool connected);
+    void rawReceived(const QByteArray& bytes);
+    void modeChanged(serialport::Bds5Mode mode, const QString& prompt);
+    void sessionStateChanged(serialport::Bds5Session::State state);
+    void errorOccurred(const QString& message);
+
+private:
+    void teardown();
+
+    ConnectionChoice m_choice;
+    // Declared link first: the session refers to the link, so it must be destroyed before it.
+    std::unique_ptr<serialport::Link> m_link;
+    std::unique_ptr<serialport::Bds5Session> m_session;
+};
+
+} // namespace app

@@ -1,0 +1,141 @@
+// ScreenshotTour: the steps, and the timer-driven walk through them.
+#include "screenshot_tour.h"
+
+#include "connection_dialog.h"
+#include "drive_connection.h"
+#include "main_window.h"
+#include "terminal_dock.h"
+#include "terminal_widget.h"
+
+#include "drive_core/bds5/bds5_drive.h"
+#include "editor/program_editor.h"
+
+#include <QCoreApplication>
+#include <QKeyEvent>
+#include <QPointer>
+#include <QTextStream>
+
+#include <cstdio>
+
+namespace app {
+
+namespace {
+const QString kHello = QStringLiteral("HELLO, WORLD");
+const QString kPrompt = QStringLiteral("-->");
+constexpr int kSettleTicks = 2; // event-loop turns between "ready" and the grab, for layout and paint
+} // namespace
+
+ScreenshotTour::ScreenshotTour(MainWindow& window, const QString& outputDir, QObject* parent)
+    : QObject(parent), m_window(window), m_outputDir(outputDir) {
+    m_timer.setInterval(kPollMs);
+    connect(&m_timer, &QTimer::timeout, this, &ScreenshotTour::poll);
+}
+
+void ScreenshotTour::start() {
+    if (!m_outputDir.mkpath(QStringLiteral("."))) {
+        QTimer::singleShot(0, this, [this] { fail(tr("cannot create %1").arg(m_outputDir.path())); });
+        return;
+    }
+    m_steps = buildSteps();
+    m_current = 0;
+    QTimer::singleShot(0, this, &ScreenshotTour::beginStep);
+}
+
+std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
+    TerminalWidget* terminal = m_window.terminal();
+    auto driveReady = [this] {
+        const auto* session = m_window.connection().session();
+        return session && session->state() == serialport::Bds5Session::State::Ready;
+    };
+    auto dialog = std::make_shared<QPointer<ConnectionDialog>>();
+    std::vector<Step> steps;
+    steps.push_back({.name = QStringLiteral("sign-on"), .ready = [terminal, driveReady] {
+                         const QString text = terminal->text();
+                         return text.contains(QString::fromLatin1(drive_core::bds5::kSignOn)) &&
+                                text.endsWith(kPrompt) && driveReady();
+                     }});
+    steps.push_back({.name = QStringLiteral("hello-world"),
+                     .act = [this] { typeIntoTerminal(QStringLiteral("P \"%1\"\r").arg(kHello)); },
+                     .ready = [this, driveReady] { return terminalShowsPromptAfter(kHello) && driveReady(); }});
+    steps.push_back({.name = QStringLiteral("main-window"), .grab = [this] { return m_window.grab(); }});
+    steps.push_back({.name = QStringLiteral("terminal"), .grab = [this] { return m_window.terminalDock()->grab(); }});
+    steps.push_back({.name = QStringLiteral("editor"), .grab = [this] { return m_window.editor()->grab(); }});
+    steps.push_back({.name = QStringLiteral("connection-dialog"),
+                     .act = [this, dialog] {
+                         *dialog = m_window.showConnectionDialog();
+                         (*dialog)->setChoice(ConnectionChoice::simulator());
+                     },
+                     .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
+                     .grab = [dialog] { return *dialog ? (*dialog)->grab() : QPixmap(); },
+                     .cleanUp = [dialog] {
+                         if (*dialog) (*dialog)->reject();
+                     }});
+    return steps;
+}
+
+void ScreenshotTour::beginStep() {
+    if (m_current >= m_steps.size()) {
+        m_timer.stop();
+        emit finished(0);
+        return;
+    }
+    m_elapsedMs = 0;
+    m_settleTicks = 0;
+    if (const Step& step = m_steps[m_current]; step.act) step.act();
+    m_timer.start();
+}
+
+void ScreenshotTour::poll() {
+    const Step& step = m_steps[m_current];
+    m_elapsedMs += kPollMs;
+    if (step.ready && !step.ready()) {
+        m_settleTicks = 0;
+        if (m_elapsedMs >= kStepTimeoutMs)
+            fail(tr("step \"%1\" was not ready after %2 s").arg(step.name).arg(kStepTimeoutMs / 1000));
+        return;
+    }
+    if (++m_settleTicks < kSettleTicks) return;
+    m_timer.stop();
+    if (step.grab) {
+        const QString path = m_outputDir.absoluteFilePath(step.name + QStringLiteral(".png"));
+        if (!step.grab().save(path)) {
+            fail(tr("cannot write %1").arg(path));
+            return;
+        }
+        QTextStream(stdout) << path << Qt::endl;
+    }
+    if (step.cleanUp) step.cleanUp();
+    ++m_current;
+    beginStep();
+}
+
+void ScreenshotTour::fail(const QString& why) {
+    m_timer.stop();
+    QTextStream(stderr) << "servodesk: screenshot tour failed: " << why << Qt::endl;
+    if (m_window.terminal()) {
+        QTextStream(stderr) << "terminal shows:\n" << m_window.terminal()->text() << Qt::endl;
+    }
+    emit finished(1);
+}
+
+void ScreenshotTour::typeIntoTerminal(const QString& text) {
+    // The same path as a user's keys: key events to the terminal widget, which sends the bytes.
+    TerminalWidget* terminal = m_window.terminal();
+    terminal->setFocus();
+    for (const QChar ch : text) {
+        const int key = ch == QLatin1Char('\r') ? int(Qt::Key_Return) : int(ch.toUpper().unicode());
+        const QString keyText = ch == QLatin1Char('\r') ? QStringLiteral("\r") : QString(ch);
+        QKeyEvent press(QEvent::KeyPress, key, Qt::NoModifier, keyText);
+        QCoreApplication::sendEvent(terminal, &press);
+        QKeyEvent release(QEvent::KeyRelease, key, Qt::NoModifier, keyText);
+        QCoreApplication::sendEvent(terminal, &release);
+    }
+}
+
+bool ScreenshotTour::terminalShowsPromptAfter(const QString& line) const {
+    const QStringList lines = m_window.terminal()->text().split(QLatin1Char('\n'));
+    const qsizetype at = lines.lastIndexOf(line);
+    return at >= 0 && lines.last() == kPrompt && at < lines.size() - 1;
+}
+
+} // namespace app

@@ -1,0 +1,60 @@
+// ScreenshotTour: `servodesk --screenshot-tour DIR`. Walks a list of named steps over a shown MainWindow
+// connected to the simulated drive — act, wait (polling on a timer, never blocking) until the view shows
+// what it should, save "<name>.png" — then reports finished(0), or finished(1) on a time-out.
+// Later views join the tour by appending steps in buildSteps().
+#pragma once
+
+#include <QDir>
+#include <QObject>
+#include <QPixmap>
+#include <QSize>
+#include <QTimer>
+
+#include <functional>
+#include <vector>
+
+namespace app {
+
+class MainWindow;
+
+class ScreenshotTour final : public QObject {
+    Q_OBJECT
+public:
+    static constexpr QSize kWindowSize{1280, 800};
+    static constexpr int kStepTimeoutMs = 15000;
+    static constexpr int kPollMs = 50;
+
+    struct Step {
+        QString name;                   // names the PNG ("terminal" -> terminal.png) and time-out messages
+        std::function<void()> act;      // optional: what a user would do first (type, open a dialog)
+        std::function<bool()> ready;    // optional: polled until true before the grab
+        std::function<QPixmap()> grab;  // optional: the picture to save; no picture when empty
+        std::function<void()> cleanUp;  // optional: after the grab (close the dialog)
+    };
+
+    ScreenshotTour(MainWindow& window, const QString& outputDir, QObject* parent = nullptr);
+
+    // Starts with the first step on the next event-loop turn.
+    void start();
+
+signals:
+    void finished(int exitCode);
+
+private:
+    std::vector<Step> buildSteps();
+    void beginStep();
+    void poll();
+    void fail(const QString& why);
+    void typeIntoTerminal(const QString& text);
+    bool terminalShowsPromptAfter(const QString& line) const;
+
+    MainWindow& m_window;
+    QDir m_outputDir;
+    std::vector<Step> m_steps;
+    std::size_t m_current = 0;
+    int m_elapsedMs = 0;
+    int m_settleTicks = 0;
+    QTimer m_timer;
+};
+
+} // namespace app

@@ -1,0 +1,120 @@
+// BDS5 program memory and label index.
+#include "bds5_program.h"
+
+#include <charconv>
+
+namespace drive_core::bds5 {
+
+void Bds5Program::clear() {
+    m_lines.clear();
+    m_sizeChars = 0;
+    m_indexed = false;
+}
+
+bool Bds5Program::append(std::string line) {
+    if (m_sizeChars + line.size() + 1 > kProgramCapacityChars) return false;
+    m_sizeChars += line.size() + 1;
+    m_lines.push_back(std::move(line));
+    m_indexed = false;
+    return true;
+}
+
+const LexedLine& Bds5Program::lexed(int number) const {
+    index();
+    return m_lexed.at(std::size_t(number - 1));
+}
+
+std::optional<int> Bds5Program::numericLabel(const LexedLine& line) {
+    if (line.entries.empty() || line.entries.front().quoted) return std::nullopt;
+    const std::string& word = line.entries.front().text;
+    if (word.size() < 2 || word.back() != '$') return std::nullopt;
+    int label = -1;
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size() - 1, label);
+    if (ec != std::errc{} || ptr != word.data() + word.size() - 1 || label < 0 || label > kMaxLabel)
+        return std::nullopt;
+    return label;
+}
+
+std::optional<DedicatedLabel> Bds5Program::dedicatedLabel(const LexedLine& line) {
+    if (line.entries.empty()) return std::nullopt;
+    const std::string& word = line.entries.front().text;
+    if (word == "POWER-UP$") return DedicatedLabel::PowerUp;
+    if (word == "AUTO$") return DedicatedLabel::Auto;
+    if (word == "MANUAL$") return DedicatedLabel::Manual;
+    if (word == "ERROR$") return DedicatedLabel::Error;
+    if (word == "VARIABLE$") return DedicatedLabel::Variable;
+    if (word == "BACKGROUND$") return DedicatedLabel::Background;
+    if (word == "A$") return DedicatedLabel::AlarmA;
+    if (word == "B$") return DedicatedLabel::AlarmB;
+    if (word == "C$") return DedicatedLabel::AlarmC;
+    return std::nullopt;
+}
+
+void Bds5Program::index() const {
+    if (m_indexed) return;
+    m_lexed.clear();
+    m_labels.clear();
+    m_dedicated.clear();
+    m_checkError.reset();
+    std::optional<int> errorLabelLine;
+    for (std::size_t i = 0; i < m_lines.size(); ++i) {
+        const int number = int(i) + 1;
+        auto lexed = lexLine(m_lines[i]);
+        if (std::holds_alternative<Bds5Error>(lexed)) {
+            m_lexed.push_back({}); // executing it reports the quote error again, with its line
+            continue;
+        }
+        m_lexed.push_back(std::get<LexedLine>(std::move(lexed)));
+        const LexedLine& l = m_lexed.back();
+        const auto numeric = numericLabel(l);
+        const auto dedicated = dedicatedLabel(l);
+        if (!numeric && !dedicated) continue;
+        if (errorLabelLine && !m_checkError) // ERROR$ must be the last label (L7352)
+            m_checkError = Bds5Error{74, l.entries.front().text, number};
+        if (numeric && !m_labels.emplace(*numeric, number).second && !m_checkError)
+            m_checkError = Bds5Error{71, l.entries.front().text, number};
+        if (dedicated && !m_dedicated.emplace(*dedicated, number).second && !m_checkError)
+            m_checkError = Bds5Error{71, l.entries.front().text, number};
+        if (dedicated == DedicatedLabel::Error) errorLabelLine = number;
+    }
+    m_indexed = true;
+}
+
+std::optional<Bds5Error> Bds5Program::check() const {
+    index();
+    return m_checkError;
+}
+
+std::optional<int> Bds5Program::labelLine(int label) const {
+    index();
+    const auto it = m_labels.find(label);
+    if (it == m_labels.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<int> Bds5Program::dedicatedLine(DedicatedLabel which) const {
+    index();
+    const auto it = m_dedicated.find(which);
+    if (it == m_dedicated.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<AlarmLabel> Bds5Program::alarm(DedicatedLabel which) const {
+    const auto line = dedicatedLine(which);
+    if (!line) return std::nullopt;
+    const LexedLine& l = lexed(*line);
+    if (l.entries.size() != 3) return std::nullopt;
+    return AlarmLabel{*line, l.entries[1].text, l.entries[2].text == "ON"};
+}
+
+std::uint16_t Bds5Program::checksum() const {
+    std::uint32_t sum = 0;
+    std::uint32_t position = 0;
+    for (const std::string& line : m_lines) {
+        for (const char c : line) sum += std::uint8_t(c) + (position++ & 0xFF);
+        sum += '\r' + (position++ & 0xFF);
+    }
+    return std::uint16_t(sum & 0xFFFF);
+}
+
+} // namespace drive_core::bds5
