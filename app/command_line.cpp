@@ -9,21 +9,23 @@ namespace app {
 
 std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QCoreApplication::translate("app", "ServoDesk, an IDE for programmable servo drives. With no options it "
-                                           "opens connected to a simulated Kollmorgen BDS5."));
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "app", "ServoDesk, an IDE for programmable servo drives. With no options it "
+               "opens connected to a simulated Kollmorgen BDS5."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption tour(QStringLiteral("screenshot-tour"),
-                                  QCoreApplication::translate("app", "Save a PNG of every main view into <dir>, then exit."),
-                                  QStringLiteral("dir"));
-    const QCommandLineOption port(QStringLiteral("port"),
-                                  QCoreApplication::translate("app", "Connect to the drive on serial port or pty <path> "
-                                                                     "instead of the simulator."),
-                                  QStringLiteral("path"));
-    const QCommandLineOption baud(QStringLiteral("baud"),
-                                  QCoreApplication::translate("app", "Baud rate, 300 to 19200 (default 9600)."),
-                                  QStringLiteral("rate"), QStringLiteral("9600"));
+    const QCommandLineOption tour(
+        QStringLiteral("screenshot-tour"),
+        QCoreApplication::translate("app", "Save a PNG of every main view into <dir>, then exit."),
+        QStringLiteral("dir"));
+    const QCommandLineOption port(
+        QStringLiteral("port"),
+        QCoreApplication::translate("app", "Connect to the drive on serial port or pty <path> "
+                                           "instead of the simulator."),
+        QStringLiteral("path"));
+    const QCommandLineOption baud(
+        QStringLiteral("baud"), QCoreApplication::translate("app", "Baud rate, 300 to 19200 (default 9600)."),
+        QStringLiteral("rate"), QStringLiteral("9600"));
     parser.addOptions({tour, port, baud});
     parser.process(arguments);
 

@@ -11,7 +11,7 @@
 namespace app {
 
 struct LaunchOptions {
-    QString screenshotTourDir;                        // empty: no tour
+    QString screenshotTourDir; // empty: no tour
     ConnectionChoice connection = ConnectionChoice::simulator();
 };
 

@@ -12,7 +12,8 @@ namespace app {
 ConnectionChoice ConnectionChoice::load(QSettings& settings) {
     ConnectionChoice choice;
     settings.beginGroup(QStringLiteral("connection"));
-    if (settings.value(QStringLiteral("kind")).toString() == QLatin1String("serial")) choice.kind = Kind::SerialPort;
+    if (settings.value(QStringLiteral("kind")).toString() == QLatin1String("serial"))
+        choice.kind = Kind::SerialPort;
     choice.portName = settings.value(QStringLiteral("port")).toString();
     const int baud = settings.value(QStringLiteral("baud"), choice.baudRate).toInt();
     if (baudRates().contains(baud)) choice.baudRate = baud;
@@ -33,13 +34,15 @@ void ConnectionChoice::save(QSettings& settings) const {
 
 std::unique_ptr<serialport::Link> ConnectionChoice::makeLink() const {
     if (kind == Kind::SerialPort) return std::make_unique<serialport::SerialPortLink>(portName, baudRate);
-    return std::make_unique<serialport::SimulatorLink>(drive_core::DriveFamily::Bds5,
-                                                       serialport::SimulatorLink::Options{.baudRate = baudRate});
+    return std::make_unique<serialport::SimulatorLink>(
+        drive_core::DriveFamily::Bds5, serialport::SimulatorLink::Options{.baudRate = baudRate});
 }
 
 QString ConnectionChoice::portText() const {
     if (kind == Kind::SerialPort)
-        return QCoreApplication::translate("app::ConnectionChoice", "%1, %2 baud").arg(portName).arg(baudRate);
+        return QCoreApplication::translate("app::ConnectionChoice", "%1, %2 baud")
+            .arg(portName)
+            .arg(baudRate);
     return QCoreApplication::translate("app::ConnectionChoice", "In-process, %1 baud").arg(baudRate);
 }
 

@@ -17,11 +17,13 @@ struct ConnectionChoice {
     enum class Kind { Simulator, SerialPort };
 
     Kind kind = Kind::Simulator;
-    QString portName;     // "/dev/ttyUSB0", "ttyS0", "/dev/pts/5"; used when kind is SerialPort
-    int baudRate = 9600;  // the serial port's rate, or the pace of the simulated drive's output
+    QString portName;    // "/dev/ttyUSB0", "ttyS0", "/dev/pts/5"; used when kind is SerialPort
+    int baudRate = 9600; // the serial port's rate, or the pace of the simulated drive's output
 
     static ConnectionChoice simulator() { return {}; }
-    static ConnectionChoice serialPort(const QString& port, int baud) { return {Kind::SerialPort, port, baud}; }
+    static ConnectionChoice serialPort(const QString& port, int baud) {
+        return {Kind::SerialPort, port, baud};
+    }
 
     // The rates the BDS5 supports (seed-bds5 §2.1).
     static QList<int> baudRates() { return {300, 600, 1200, 2400, 4800, 9600, 19200}; }

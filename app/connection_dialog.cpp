@@ -18,12 +18,9 @@
 namespace app {
 
 ConnectionDialog::ConnectionDialog(QWidget* parent)
-    : QDialog(parent),
-      m_simulator(new QRadioButton(tr("Simulated BDS5"), this)),
-      m_serial(new QRadioButton(tr("Serial port"), this)),
-      m_port(new QComboBox(this)),
-      m_refresh(new QPushButton(tr("Refresh"), this)),
-      m_baud(new QComboBox(this)),
+    : QDialog(parent), m_simulator(new QRadioButton(tr("Simulated BDS5"), this)),
+      m_serial(new QRadioButton(tr("Serial port"), this)), m_port(new QComboBox(this)),
+      m_refresh(new QPushButton(tr("Refresh"), this)), m_baud(new QComboBox(this)),
       m_portHint(new QLabel(this)) {
     setObjectName(QStringLiteral("connectionDialog"));
     setWindowTitle(tr("Connect to Drive"));
@@ -51,7 +48,8 @@ ConnectionDialog::ConnectionDialog(QWidget* parent)
     serialForm->addRow(tr("Port:"), portRow);
     serialForm->addRow(QString(), m_portHint);
 
-    for (const int rate : ConnectionChoice::baudRates()) m_baud->addItem(QString::number(rate), rate);
+    for (const int rate : ConnectionChoice::baudRates())
+        m_baud->addItem(QString::number(rate), rate);
     auto* lineForm = new QFormLayout;
     lineForm->addRow(tr("Baud rate:"), m_baud);
     auto* lineNote = new QLabel(tr("8 data bits, no parity, 1 stop bit, no flow control."), this);

@@ -47,24 +47,31 @@ void DocumentController::open() {
     });
 }
 
-void DocumentController::save() { saveThen([] {}); }
+void DocumentController::save() {
+    saveThen([] {});
+}
 
-void DocumentController::saveAs() { saveAsThen([] {}); }
+void DocumentController::saveAs() {
+    saveAsThen([] {});
+}
 
 void DocumentController::whenSafeToDiscard(std::function<void()> proceed) {
     if (!m_editor.isModified()) {
         proceed();
         return;
     }
-    auto* box = new QMessageBox(QMessageBox::Warning, tr("Unsaved Changes"),
-                                tr("%1 has unsaved changes. Save them?").arg(displayName()),
-                                QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_dialogParent);
+    auto* box =
+        new QMessageBox(QMessageBox::Warning, tr("Unsaved Changes"),
+                        tr("%1 has unsaved changes. Save them?").arg(displayName()),
+                        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_dialogParent);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setDefaultButton(QMessageBox::Save);
     connect(box, &QMessageBox::finished, this, [this, box, proceed = std::move(proceed)](int) {
         const QMessageBox::StandardButton answer = box->standardButton(box->clickedButton());
-        if (answer == QMessageBox::Save) saveThen(proceed);
-        else if (answer == QMessageBox::Discard) proceed();
+        if (answer == QMessageBox::Save)
+            saveThen(proceed);
+        else if (answer == QMessageBox::Discard)
+            proceed();
     });
     box->open();
 }
@@ -82,7 +89,8 @@ void DocumentController::saveThen(std::function<void()> then) {
 }
 
 void DocumentController::saveAsThen(std::function<void()> then) {
-    const QString start = m_editor.filePath().isEmpty() ? QDir::home().filePath(m_untitledName) : m_editor.filePath();
+    const QString start =
+        m_editor.filePath().isEmpty() ? QDir::home().filePath(m_untitledName) : m_editor.filePath();
     auto* dialog = new QFileDialog(m_dialogParent, tr("Save Program As"), start, kFilter);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setAcceptMode(QFileDialog::AcceptSave);
@@ -115,7 +123,8 @@ void DocumentController::loadFrom(const QString& path) {
 }
 
 void DocumentController::showError(const QString& message) {
-    auto* box = new QMessageBox(QMessageBox::Critical, tr("ServoDesk"), message, QMessageBox::Ok, m_dialogParent);
+    auto* box =
+        new QMessageBox(QMessageBox::Critical, tr("ServoDesk"), message, QMessageBox::Ok, m_dialogParent);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
 }

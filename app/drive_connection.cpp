@@ -1,6 +1,8 @@
 // DriveConnection: owns and wires the link and the session.
 #include "drive_connection.h"
 
+#include <utility>
+
 namespace app {
 
 DriveConnection::DriveConnection(QObject* parent) : QObject(parent) {}
@@ -13,6 +15,7 @@ DriveConnection::~DriveConnection() {
 void DriveConnection::connectTo(const ConnectionChoice& choice) {
     teardown();
     m_choice = choice;
+    m_reportedNotConnected = false;
     m_link = choice.makeLink();
     m_session = std::make_unique<serialport::Bds5Session>(*m_link);
     serialport::Link* link = m_link.get();
@@ -21,7 +24,8 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
     connect(link, &serialport::Link::errorOccurred, this, &DriveConnection::errorOccurred);
     connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
     connect(m_session.get(), &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
-    connect(m_session.get(), &serialport::Bds5Session::stateChanged, this, &DriveConnection::sessionStateChanged);
+    connect(m_session.get(), &serialport::Bds5Session::stateChanged, this,
+            &DriveConnection::sessionStateChanged);
     emit linkChanged();
     link->open();
 }
@@ -30,11 +34,14 @@ void DriveConnection::disconnectDrive() {
     if (m_link) m_link->close();
 }
 
-QString DriveConnection::linkDescription() const { return m_link ? m_link->description() : QString(); }
+QString DriveConnection::linkDescription() const {
+    return m_link ? m_link->description() : QString();
+}
 
 void DriveConnection::sendRaw(const QByteArray& bytes) {
     if (!isConnected()) {
-        emit errorOccurred(tr("Not connected to a drive: nothing was sent"));
+        if (!std::exchange(m_reportedNotConnected, true))
+            emit errorOccurred(tr("Not connected to a drive: nothing was sent. Use Drive > Connect."));
         return;
     }
     m_session->sendRaw(bytes);

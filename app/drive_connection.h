@@ -49,6 +49,7 @@ private:
     // Declared link first: the session refers to the link, so it must be destroyed before it.
     std::unique_ptr<serialport::Link> m_link;
     std::unique_ptr<serialport::Bds5Session> m_session;
+    bool m_reportedNotConnected = false; // say "not connected" once, not on every key press
 };
 
 } // namespace app

@@ -14,6 +14,7 @@
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -28,11 +29,8 @@ constexpr double kTerminalShare = 0.40; // of the window height, on first show
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent),
-      m_editor(new editor::ProgramEditor(this)),
-      m_terminalDock(new TerminalDock(this)),
-      m_connection(new DriveConnection(this)),
-      m_documents(new DocumentController(*m_editor, this)) {
+    : QMainWindow(parent), m_editor(new editor::ProgramEditor(this)), m_terminalDock(new TerminalDock(this)),
+      m_connection(new DriveConnection(this)), m_documents(new DocumentController(*m_editor, this)) {
     resources::initialize();
     setObjectName(QStringLiteral("mainWindow"));
     resize(1200, 800);
@@ -55,7 +53,9 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
-TerminalWidget* MainWindow::terminal() const { return m_terminalDock->terminal(); }
+TerminalWidget* MainWindow::terminal() const {
+    return m_terminalDock->terminal();
+}
 
 void MainWindow::connectDrive(const ConnectionChoice& choice) {
     m_connection->connectTo(choice);
@@ -100,12 +100,22 @@ void MainWindow::createMenus() {
 }
 
 void MainWindow::createStatusBar() {
+    // Each label sits in a cell with the separator before it, so hiding the cell hides both.
     auto makeLabel = [this](const QString& name, const QString& tip) {
-        auto* label = new QLabel(this);
+        auto* cell = new QWidget(this);
+        auto* layout = new QHBoxLayout(cell);
+        layout->setContentsMargins(0, 0, 0, 0);
+        if (!statusBar()->findChildren<QLabel*>().isEmpty()) {
+            auto* separator = new QFrame(cell);
+            separator->setFrameStyle(QFrame::VLine | QFrame::Sunken);
+            layout->addWidget(separator);
+        }
+        auto* label = new QLabel(cell);
         label->setObjectName(name);
         label->setToolTip(tip);
         label->setContentsMargins(6, 0, 6, 0);
-        statusBar()->addPermanentWidget(label);
+        layout->addWidget(label);
+        statusBar()->addPermanentWidget(cell);
         return label;
     };
     m_linkLabel = makeLabel(QStringLiteral("linkLabel"), tr("The drive ServoDesk talks to"));
@@ -122,6 +132,10 @@ void MainWindow::wireConnection() {
     connect(m_connection, &DriveConnection::modeChanged, this, &MainWindow::showMode);
     connect(m_connection, &DriveConnection::linkChanged, this, &MainWindow::updateLinkStatus);
     connect(m_connection, &DriveConnection::connectedChanged, this, &MainWindow::updateLinkStatus);
+    connect(m_connection, &DriveConnection::connectedChanged, this, [this](bool connected) {
+        if (!connected)
+            terminal()->displayNotice(tr("Disconnected from %1").arg(m_connection->linkDescription()));
+    });
     connect(m_connection, &DriveConnection::sessionStateChanged, this, &MainWindow::showState);
     connect(m_connection, &DriveConnection::errorOccurred, this, &MainWindow::showLinkError);
 }
@@ -134,8 +148,10 @@ void MainWindow::updateTitle() {
 void MainWindow::updateLinkStatus() {
     const bool hasLink = m_connection->hasLink();
     m_linkLabel->setText(hasLink ? m_connection->linkDescription() : tr("No drive"));
+    // A serial link's description already names its port and rate ("/dev/ttyUSB0 9600 8N1").
+    const bool simulated = m_connection->choice().kind == ConnectionChoice::Kind::Simulator;
     m_portLabel->setText(hasLink ? m_connection->choice().portText() : QString());
-    m_portLabel->setVisible(hasLink);
+    m_portLabel->parentWidget()->setVisible(hasLink && simulated);
     if (!m_connection->isConnected()) m_modeLabel->setText(tr("Mode: \u2014"));
     m_disconnectAction->setEnabled(m_connection->isConnected());
     showState();
@@ -151,7 +167,8 @@ void MainWindow::showState() {
     QString colour = QStringLiteral("#b3261e");
     if (m_connection->isConnected() && m_connection->session()) {
         switch (m_connection->session()->state()) {
-        case State::Closed: break;
+        case State::Closed:
+            break;
         case State::WaitingForPrompt:
             text = tr("Connected");
             colour = QStringLiteral("#c77700");
@@ -166,7 +183,8 @@ void MainWindow::showState() {
             break;
         }
     }
-    m_stateLabel->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2").arg(colour, text.toHtmlEscaped()));
+    m_stateLabel->setText(
+        QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2").arg(colour, text.toHtmlEscaped()));
 }
 
 void MainWindow::showLinkError(const QString& message) {
@@ -205,8 +223,7 @@ void MainWindow::showEvent(QShowEvent* event) {
     QMainWindow::showEvent(event);
     if (m_shownOnce) return;
     m_shownOnce = true;
-    if (!m_layoutRestored)
-        resizeDocks({m_terminalDock}, {int(height() * kTerminalShare)}, Qt::Vertical);
+    if (!m_layoutRestored) resizeDocks({m_terminalDock}, {int(height() * kTerminalShare)}, Qt::Vertical);
 }
 
 } // namespace app

@@ -11,11 +11,10 @@
 #include "editor/program_editor.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QKeyEvent>
 #include <QPointer>
 #include <QTextStream>
-
-#include <cstdio>
 
 namespace app {
 
@@ -49,27 +48,35 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     };
     auto dialog = std::make_shared<QPointer<ConnectionDialog>>();
     std::vector<Step> steps;
-    steps.push_back({.name = QStringLiteral("sign-on"), .ready = [terminal, driveReady] {
+    // A drive on a serial port signed on before we opened it; only the simulator's sign-on can be awaited.
+    const bool simulated = m_window.connection().choice().kind == ConnectionChoice::Kind::Simulator;
+    steps.push_back({.name = QStringLiteral("sign-on"), .ready = [terminal, driveReady, simulated] {
                          const QString text = terminal->text();
-                         return text.contains(QString::fromLatin1(drive_core::bds5::kSignOn)) &&
+                         return (!simulated ||
+                                 text.contains(QString::fromLatin1(drive_core::bds5::kSignOn))) &&
                                 text.endsWith(kPrompt) && driveReady();
                      }});
-    steps.push_back({.name = QStringLiteral("hello-world"),
-                     .act = [this] { typeIntoTerminal(QStringLiteral("P \"%1\"\r").arg(kHello)); },
-                     .ready = [this, driveReady] { return terminalShowsPromptAfter(kHello) && driveReady(); }});
+    steps.push_back(
+        {.name = QStringLiteral("hello-world"),
+         .act = [this] { typeIntoTerminal(QStringLiteral("P \"%1\"\r").arg(kHello)); },
+         .ready = [this, driveReady] { return terminalShowsPromptAfter(kHello) && driveReady(); }});
     steps.push_back({.name = QStringLiteral("main-window"), .grab = [this] { return m_window.grab(); }});
-    steps.push_back({.name = QStringLiteral("terminal"), .grab = [this] { return m_window.terminalDock()->grab(); }});
+    steps.push_back({.name = QStringLiteral("terminal"),
+                     .grab = [this] { return m_window.terminalDock()->grab(); },
+                     .text = [terminal] { return terminal->text(); }});
     steps.push_back({.name = QStringLiteral("editor"), .grab = [this] { return m_window.editor()->grab(); }});
     steps.push_back({.name = QStringLiteral("connection-dialog"),
-                     .act = [this, dialog] {
-                         *dialog = m_window.showConnectionDialog();
-                         (*dialog)->setChoice(ConnectionChoice::simulator());
-                     },
+                     .act =
+                         [this, dialog] {
+                             *dialog = m_window.showConnectionDialog();
+                             (*dialog)->setChoice(ConnectionChoice::simulator());
+                         },
                      .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
                      .grab = [dialog] { return *dialog ? (*dialog)->grab() : QPixmap(); },
-                     .cleanUp = [dialog] {
-                         if (*dialog) (*dialog)->reject();
-                     }});
+                     .cleanUp =
+                         [dialog] {
+                             if (*dialog) (*dialog)->reject();
+                         }});
     return steps;
 }
 
@@ -99,6 +106,15 @@ void ScreenshotTour::poll() {
     if (step.grab) {
         const QString path = m_outputDir.absoluteFilePath(step.name + QStringLiteral(".png"));
         if (!step.grab().save(path)) {
+            fail(tr("cannot write %1").arg(path));
+            return;
+        }
+        QTextStream(stdout) << path << Qt::endl;
+    }
+    if (step.text) {
+        const QString path = m_outputDir.absoluteFilePath(step.name + QStringLiteral(".txt"));
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(step.text().toUtf8()) < 0) {
             fail(tr("cannot write %1").arg(path));
             return;
         }

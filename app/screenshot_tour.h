@@ -25,11 +25,12 @@ public:
     static constexpr int kPollMs = 50;
 
     struct Step {
-        QString name;                   // names the PNG ("terminal" -> terminal.png) and time-out messages
-        std::function<void()> act;      // optional: what a user would do first (type, open a dialog)
-        std::function<bool()> ready;    // optional: polled until true before the grab
-        std::function<QPixmap()> grab;  // optional: the picture to save; no picture when empty
-        std::function<void()> cleanUp;  // optional: after the grab (close the dialog)
+        QString name;                  // names the PNG ("terminal" -> terminal.png) and time-out messages
+        std::function<void()> act;     // optional: what a user would do first (type, open a dialog)
+        std::function<bool()> ready;   // optional: polled until true before the grab
+        std::function<QPixmap()> grab; // optional: the picture to save; no picture when empty
+        std::function<QString()> text; // optional: what the view says, saved as "<name>.txt" for tests
+        std::function<void()> cleanUp; // optional: after the grab (close the dialog)
     };
 
     ScreenshotTour(MainWindow& window, const QString& outputDir, QObject* parent = nullptr);

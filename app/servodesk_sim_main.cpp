@@ -19,10 +19,9 @@ void onSignal(int) { g_stop.store(true); }
 
 int usage(int code) {
     std::fprintf(code ? stderr : stdout,
-                 "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio) [--baud N] [--speed F]\n"
+                 "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio) [--speed F]\n"
                  "  --pty       create a pseudo-terminal; its path is printed first as \"PTY /dev/pts/N\"\n"
                  "  --stdio     talk on stdin/stdout (a lone LF counts as CR); stops at end of input\n"
-                 "  --baud N    pace the drive's output at N baud, 8N1 (default 9600; 0 = unpaced)\n"
                  "  --speed F   run simulated time F times faster than the wall clock (default 1)\n");
     return code;
 }
@@ -40,7 +39,6 @@ int main(int argc, char** argv) {
         if (arg == "--drive" && hasValue) driveName = argv[++i];
         else if (arg == "--pty") pty = true;
         else if (arg == "--stdio") stdio = true;
-        else if (arg == "--baud" && hasValue) options.baudRate = std::atoi(argv[++i]);
         else if (arg == "--speed" && hasValue) options.speedFactor = std::atof(argv[++i]);
         else if (arg == "--help" || arg == "-h") return usage(0);
         else {

@@ -20,7 +20,9 @@ const QColor kNotice(0x7a, 0x7a, 0x86);
 constexpr int kBellFlashMs = 150;
 constexpr int kFontPointSize = 11;
 
-bool isPrintableLatin1(char16_t u) { return (u >= 0x20 && u < 0x7f) || (u >= 0xa0 && u <= 0xff); }
+bool isPrintableLatin1(char16_t u) {
+    return (u >= 0x20 && u < 0x7f) || (u >= 0xa0 && u <= 0xff);
+}
 } // namespace
 
 TerminalWidget::TerminalWidget(QWidget* parent) : QPlainTextEdit(parent) {
@@ -60,11 +62,20 @@ void TerminalWidget::displayBytes(const QByteArray& bytes) {
         }
         if (!run.isEmpty()) writePrintable(std::exchange(run, {}));
         switch (c) {
-        case u'\r': m_cursor.movePosition(QTextCursor::StartOfBlock); break;
-        case u'\n': newLine(); break;
-        case u'\b': eraseBack(); break;
-        case u'\a': bell(); break;
-        default: break; // other control characters have no visible effect on a BDS5 terminal
+        case u'\r':
+            m_cursor.movePosition(QTextCursor::StartOfBlock);
+            break;
+        case u'\n':
+            newLine();
+            break;
+        case u'\b':
+            eraseBack();
+            break;
+        case u'\a':
+            bell();
+            break;
+        default:
+            break; // other control characters have no visible effect on a BDS5 terminal
         }
     }
     if (!run.isEmpty()) writePrintable(run);
@@ -121,7 +132,8 @@ void TerminalWidget::showWriteCursor() {
 }
 
 QByteArray TerminalWidget::bytesForKey(const QKeyEvent* event) {
-    const Qt::KeyboardModifiers mods = event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier);
+    const Qt::KeyboardModifiers mods =
+        event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier);
     if (mods == Qt::ControlModifier) {
         // The BDS5's attention characters: ^X stops motion and the program, ^V is the multidrop wake-up.
         if (event->key() == Qt::Key_X) return QByteArrayLiteral("\x18");
@@ -131,10 +143,14 @@ QByteArray TerminalWidget::bytesForKey(const QKeyEvent* event) {
     if (mods != Qt::NoModifier) return {};
     switch (event->key()) {
     case Qt::Key_Return:
-    case Qt::Key_Enter: return QByteArrayLiteral("\r");
-    case Qt::Key_Backspace: return QByteArrayLiteral("\b");
-    case Qt::Key_Escape: return QByteArrayLiteral("\x1b");
-    default: break;
+    case Qt::Key_Enter:
+        return QByteArrayLiteral("\r");
+    case Qt::Key_Backspace:
+        return QByteArrayLiteral("\b");
+    case Qt::Key_Escape:
+        return QByteArrayLiteral("\x1b");
+    default:
+        break;
     }
     QByteArray bytes;
     for (const QChar ch : event->text())

@@ -10,33 +10,48 @@
 namespace editor {
 
 namespace {
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
 bool isWordChar(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
 }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
 } // namespace
 
 Bds5Lexer::Bds5Lexer(QObject* parent) : QsciLexerCustom(parent) {}
 
 QString Bds5Lexer::description(int style) const {
     switch (style) {
-    case Default: return tr("Default");
-    case Comment: return tr("Comment");
-    case String: return tr("String");
-    case Label: return tr("Label");
-    case Number: return tr("Number");
-    default: return {};
+    case Default:
+        return tr("Default");
+    case Comment:
+        return tr("Comment");
+    case String:
+        return tr("String");
+    case Label:
+        return tr("Label");
+    case Number:
+        return tr("Number");
+    default:
+        return {};
     }
 }
 
 QColor Bds5Lexer::defaultColor(int style) const {
     switch (style) {
-    case Comment: return QColor(0x5f, 0x80, 0x5f);
-    case String: return QColor(0xa3, 0x3b, 0x14);
-    case Label: return QColor(0x6a, 0x2c, 0xa8);
-    case Number: return QColor(0x0b, 0x6e, 0x8a);
-    default: return QColor(0x1e, 0x1e, 0x1e);
+    case Comment:
+        return QColor(0x5f, 0x80, 0x5f);
+    case String:
+        return QColor(0xa3, 0x3b, 0x14);
+    case Label:
+        return QColor(0x6a, 0x2c, 0xa8);
+    case Number:
+        return QColor(0x0b, 0x6e, 0x8a);
+    default:
+        return QColor(0x1e, 0x1e, 0x1e);
     }
 }
 
@@ -44,35 +59,43 @@ QByteArray Bds5Lexer::styleLine(const QByteArray& line) {
     const qsizetype n = line.size();
     QByteArray styles(n, char(Default));
     qsizetype i = 0;
-    while (i < n && isSpace(line[i])) ++i;
+    while (i < n && isSpace(line[i]))
+        ++i;
 
     // A label first on the line: digits or a name (letters, '-') right before '$'.
     qsizetype j = i;
-    while (j < n && (isWordChar(line[j]) || line[j] == '-')) ++j;
+    while (j < n && (isWordChar(line[j]) || line[j] == '-'))
+        ++j;
     if (j > i && j < n && line[j] == '$') {
-        for (qsizetype k = i; k <= j; ++k) styles[k] = char(Label);
+        for (qsizetype k = i; k <= j; ++k)
+            styles[k] = char(Label);
         i = j + 1;
     }
 
     while (i < n) {
         const char c = line[i];
         if (c == ';' && (i == 0 || isSpace(line[i - 1]))) {
-            for (qsizetype k = i; k < n; ++k) styles[k] = char(Comment);
+            for (qsizetype k = i; k < n; ++k)
+                styles[k] = char(Comment);
             break;
         }
         if (c == '"') {
             qsizetype k = i + 1;
-            while (k < n && line[k] != '"' && line[k] != '\r' && line[k] != '\n') ++k;
+            while (k < n && line[k] != '"' && line[k] != '\r' && line[k] != '\n')
+                ++k;
             const qsizetype endQuote = (k < n && line[k] == '"') ? k + 1 : k;
-            for (qsizetype m = i; m < endQuote; ++m) styles[m] = char(String);
+            for (qsizetype m = i; m < endQuote; ++m)
+                styles[m] = char(String);
             i = endQuote;
             continue;
         }
         if (isWordChar(c)) {
             qsizetype k = i;
-            while (k < n && isWordChar(line[k])) ++k;
+            while (k < n && isWordChar(line[k]))
+                ++k;
             if (isDigit(c))
-                for (qsizetype m = i; m < k; ++m) styles[m] = char(Number);
+                for (qsizetype m = i; m < k; ++m)
+                    styles[m] = char(Number);
             i = k;
             continue;
         }

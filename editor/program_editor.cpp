@@ -40,6 +40,7 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(parent) {
     setMarginsForegroundColor(QColor(0x80, 0x80, 0x80));
     setMarginWidth(1, 6); // a little air between the numbers and the text
     setCaretLineVisible(true);
+    SendScintilla(SCI_SETCARETLINEVISIBLEALWAYS, 1); // keep the highlight while the terminal has focus
     setCaretLineBackgroundColor(QColor(0xe8, 0xf2, 0xfe));
     setCaretWidth(2);
     setIndentationsUseTabs(false);
@@ -47,6 +48,10 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(parent) {
     setAutoIndent(true);
     setBraceMatching(QsciScintilla::NoBraceMatch);
     setWrapMode(QsciScintilla::WrapNone);
+    // Scintilla's fixed 2000-pixel scroll width shows a horizontal scroll bar on short programs; track
+    // the longest line instead.
+    SendScintilla(SCI_SETSCROLLWIDTH, 1);
+    SendScintilla(SCI_SETSCROLLWIDTHTRACKING, 1);
     setEolMode(QsciScintilla::EolUnix);
     connect(this, &QsciScintilla::linesChanged, this, &ProgramEditor::updateLineNumberMargin);
     updateLineNumberMargin();

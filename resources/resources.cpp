@@ -3,7 +3,9 @@
 
 #include <QtGlobal>
 
-static void initializeServoDeskResources() { Q_INIT_RESOURCE(servodesk); }
+static void initializeServoDeskResources() {
+    Q_INIT_RESOURCE(servodesk);
+}
 
 namespace resources {
 

@@ -100,32 +100,17 @@ int PtyDriveHost::run(const std::atomic<bool>& stop) {
             ++ticks;
         }
         if (ticks == kMaxTicksPerWake) simulatedUs = double(m_drive->now().count());
-        m_backlog += m_drive->takeTransmitted();
-        flushOutput(wallDeltaS, false);
-        if (eofAt && now - *eofAt > kDrainAfterEof) {
-            flushOutput(0, true);
-            return 0;
-        }
+        m_backlog += m_drive->takeTransmitted(); // the drive's UART already paces at its BAUD rate
+        flushOutput();
+        if (eofAt && now - *eofAt > kDrainAfterEof) return 0;
     }
     return 0;
 }
 
-void PtyDriveHost::flushOutput(double wallDeltaS, bool all) {
-    if (m_backlog.empty()) {
-        m_byteCredit = 0;
-        return;
-    }
-    std::size_t count = m_backlog.size();
-    if (m_options.baudRate > 0 && !all) {
-        m_byteCredit = std::min(m_byteCredit + wallDeltaS * m_options.baudRate / 10.0, 4096.0);
-        count = std::min(count, std::size_t(m_byteCredit));
-    }
-    if (count == 0) return;
-    const ssize_t written = ::write(m_outFd, m_backlog.data(), count);
-    if (written > 0) {
-        m_backlog.erase(0, std::size_t(written));
-        if (m_options.baudRate > 0 && !all) m_byteCredit -= double(written);
-    }
+void PtyDriveHost::flushOutput() {
+    if (m_backlog.empty()) return;
+    const ssize_t written = ::write(m_outFd, m_backlog.data(), m_backlog.size());
+    if (written > 0) m_backlog.erase(0, std::size_t(written));
     // EAGAIN: the client is not reading; keep the bytes (a real port would drop them, a pty just fills).
 }
 

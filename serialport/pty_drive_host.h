@@ -14,7 +14,6 @@ class PtyDriveHost {
 public:
     struct Options {
         double speedFactor = 1.0; // simulated seconds per wall-clock second
-        int baudRate = 9600;      // pace the drive's output as its serial port would; 0 = unpaced
         bool lfIsCr = false;      // treat a lone LF from the host as CR (for line-buffered terminals)
     };
 
@@ -35,7 +34,7 @@ public:
     const std::string& errorText() const { return m_error; }
 
 private:
-    void flushOutput(double wallDeltaS, bool all);
+    void flushOutput();
 
     std::unique_ptr<drive_core::Drive> m_drive;
     Options m_options;
@@ -43,8 +42,7 @@ private:
     int m_outFd = -1;
     int m_masterFd = -1;
     int m_slaveFd = -1;
-    std::string m_backlog;
-    double m_byteCredit = 0;
+    std::string m_backlog; // sent by the drive, not yet accepted by the pty (its client is slow)
     bool m_lastWasCr = false;
     std::string m_error;
 };

@@ -1,5 +1,5 @@
 // A Link to an in-process simulated drive. The drive runs in a worker thread, stepped in 1 ms ticks
-// paced to the wall clock (times a speed factor); the bytes it sends can be paced at a baud rate.
+// paced to the wall clock (times a speed factor); its own UART paces the bytes it sends.
 #pragma once
 
 #include "link.h"
@@ -19,7 +19,7 @@ class SimulatorLink final : public Link {
 public:
     struct Options {
         double speedFactor = 1.0; // simulated seconds per wall-clock second
-        int baudRate = 9600;      // pace drive->host bytes as a real port would; 0 = unlimited
+        int baudRate = 9600;      // the drive's BAUD: its UART paces what it sends; sessions time out by it
     };
 
     SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent = nullptr);

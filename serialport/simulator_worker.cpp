@@ -48,22 +48,9 @@ void SimulatorWorker::tick() {
         ++ticks;
     }
     if (ticks == kMaxTicksPerWake) m_simulatedUs = double(m_drive->now().count()); // drop the lost time
+    // The drive's own UART sends at its BAUD rate: what it has sent is on the wire now.
     const std::string out = m_drive->takeTransmitted();
-    m_backlog.append(out.data(), qsizetype(out.size()));
-    if (m_backlog.isEmpty()) {
-        m_byteCredit = 0;
-        return;
-    }
-    qsizetype count = m_backlog.size();
-    if (m_options.baudRate > 0) {
-        // 8N1: ten bits a character on the wire.
-        m_byteCredit = std::min(m_byteCredit + double(wallDeltaUs) * m_options.baudRate / 10.0 / 1e6, 4096.0);
-        count = std::min<qsizetype>(count, qsizetype(m_byteCredit));
-        m_byteCredit -= double(count);
-    }
-    if (count == 0) return;
-    emit transmitted(m_backlog.left(count));
-    m_backlog.remove(0, count);
+    if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
 }
 
 } // namespace serialport

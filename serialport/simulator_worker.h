@@ -35,8 +35,6 @@ private:
     QElapsedTimer m_clock;
     qint64 m_lastWallUs = 0;
     double m_simulatedUs = 0; // how far the drive should have got
-    QByteArray m_backlog;     // bytes the drive sent that the "wire" has not carried yet
-    double m_byteCredit = 0;  // baud pacing: bytes the wire may carry now
 };
 
 } // namespace serialport

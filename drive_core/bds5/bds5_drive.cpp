@@ -1,6 +1,9 @@
 // The simulated BDS5's serial line discipline and processor modes.
 #include "bds5_drive.h"
 
+#include "drive_core/catalog/bds5_catalog.h"
+
+#include <algorithm>
 #include <utility>
 
 namespace drive_core::bds5 {
@@ -10,6 +13,7 @@ constexpr char kBell = '\x07';
 constexpr char kBackspace = '\x08';
 constexpr char kEscape = '\x1b';
 constexpr char kCtrlX = '\x18';
+constexpr char kCtrlV = '\x16';
 constexpr char kDelete = '\x7f';
 constexpr std::string_view kCrLf = "\r\n";
 // Single-drop prompts (Table 2.2, §2.3); multidrop prefixes come with the serial issue.
@@ -30,8 +34,11 @@ void Bds5Drive::powerUp() {
     m_mode = Bds5DriveMode::Interactive;
     m_received.clear();
     m_line.clear();
+    m_txFifo.clear();
+    m_txHead = 0;
+    m_txCredit = 0;
+    chooseBaudRate();
     m_heldErrors.clear();
-    m_outputs.fill(false);
     m_time = Microseconds{0};
     m_powered = true;
     m_promptPending = m_breakPending = false;
@@ -58,9 +65,15 @@ std::string Bds5Drive::takeTransmitted() { return std::exchange(m_transmitted, {
 void Bds5Drive::step(Microseconds dt) {
     m_time += dt;
     if (!m_powered) return;
+    tickTimers(dt);
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
-    if (!m_executor.running()) return;
+    if (m_executor.running()) runProgram();
+    driveUart(dt);
+}
+
+void Bds5Drive::runProgram() {
+    m_state.serialBusy = transmitting(); // a print waits for the previous one to leave (L4637)
     std::string out;
     std::optional<Bds5Error> error;
     const ProgramStop stop = m_executor.advance(m_time, out, error);
@@ -72,16 +85,33 @@ void Bds5Drive::step(Microseconds dt) {
     if (stop != ProgramStop::Running) programStopped(stop, error);
 }
 
+// TMR1-TMR4 count down every millisecond and stop at 0 (L5775-5800).
+void Bds5Drive::tickTimers(Microseconds dt) {
+    m_timerRemainder += dt;
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(m_timerRemainder);
+    if (ms.count() == 0) return;
+    m_timerRemainder -= ms;
+    for (const char* name : {"TMR1", "TMR2", "TMR3", "TMR4"}) {
+        const auto ref = catalog::bds5::findVariable(name);
+        if (!ref) continue;
+        const std::int64_t value = m_state.variables.read(*ref);
+        m_state.variables.set(*ref, std::int32_t(std::max<std::int64_t>(0, value - ms.count())));
+    }
+}
+
+// The pins are the I1-I16 / O1-O8 switches and the IN / OUT words (I1 = bit 0, L1800-1895).
 void Bds5Drive::setInput(int number, bool on) {
-    if (number >= 1 && number <= inputCount()) m_inputs[std::size_t(number - 1)] = on;
+    if (number < 1 || number > kInputCount) return;
+    m_state.variables.set("I" + std::to_string(number), on ? 1 : 0);
 }
 
 bool Bds5Drive::input(int number) const {
-    return number >= 1 && number <= inputCount() && m_inputs[std::size_t(number - 1)];
+    return number >= 1 && number <= kInputCount && m_state.variables.read("I" + std::to_string(number)).value_or(0);
 }
 
 bool Bds5Drive::output(int number) const {
-    return number >= 1 && number <= outputCount() && m_outputs[std::size_t(number - 1)];
+    return number >= 1 && number <= kOutputCount &&
+           m_state.variables.read("O" + std::to_string(number)).value_or(0);
 }
 
 void Bds5Drive::raiseFault(int code) {
@@ -95,6 +125,7 @@ void Bds5Drive::raiseFault(int code) {
 void Bds5Drive::handleByte(char c) {
     if (c == kCtrlX) return handleBreakCharacter();
     if (c == kEscape) return handleEscape();
+    if (c == kCtrlV) return m_executor.fireVariableTask(); // the VARIABLE$ task (L4818)
     // Run mode has no prompt: the drive takes no input but its attention characters (L1254).
     if (m_mode == Bds5DriveMode::Running) return;
     const bool echo = switchOn("ECHO", true);
@@ -160,6 +191,7 @@ void Bds5Drive::handleEscape() {
         m_mode = Bds5DriveMode::Interactive;
         sendPrompt();
         return;
+    case Bds5DriveMode::Editor: return editorReply(m_editor.escape());
     }
 }
 
@@ -179,6 +211,7 @@ void Bds5Drive::endOfLine() {
     std::string line = std::exchange(m_line, {});
     m_promptPending = false;
     if (m_mode == Bds5DriveMode::ProgramLoad) return loadLine(std::move(line));
+    if (m_mode == Bds5DriveMode::Editor) return editorReply(m_editor.line(line));
     if (!m_heldErrors.empty() || m_breakPending) {
         // A command typed while an error waits is ignored (L9721-9739, L9921-9935).
         const bool typed = line.find_first_not_of(" \t") != std::string::npos;
@@ -217,8 +250,16 @@ void Bds5Drive::interactiveLine(const std::string& line) {
 void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
     switch (outcome.flow) {
     case Flow::Run: return runProgram(outcome.target);
+    case Flow::Edit:
+        m_mode = Bds5DriveMode::Editor;
+        return editorReply(m_editor.enter());
     case Flow::Load:
-        // Passwords (PASS in the resident editor) arrive with the editor; with none set, any is accepted.
+        // A password set with the editor's PASS must be given: ERR 110, program unchanged (L7123-7134).
+        if (!m_state.program.password().empty() && outcome.text != m_state.program.password()) {
+            logError(m_state, 110);
+            sendError(Bds5Error{110, ">BDS", 0}, kErrorPreamble);
+            return sendPrompt();
+        }
         m_mode = Bds5DriveMode::ProgramLoad;
         m_loadStarted = false;
         m_promptPending = false;
@@ -242,18 +283,14 @@ void Bds5Drive::runProgram(int label) {
         sendError(*problem, kErrorPreamble);
         return sendPrompt();
     }
-    int line = 1;
+    std::optional<int> line; // RUN alone enables multitasking without a main routine (L4595-4601)
     if (label >= 0) {
-        const auto found = m_state.program.labelLine(label);
-        if (!found) {
+        line = m_state.program.labelLine(label);
+        if (!line) {
             logError(m_state, 70);
             sendError(Bds5Error{70, std::to_string(label), 0}, kErrorPreamble);
             return sendPrompt();
         }
-        line = *found;
-    } else {
-        // RUN alone enables multitasking without a main routine (L4595-4601); tasks come with issue 3.
-        return;
     }
     m_executor.start(line, m_time);
     m_mode = Bds5DriveMode::Running; // no prompt while the program runs
@@ -291,6 +328,15 @@ void Bds5Drive::loadLine(std::string line) {
     m_promptPending = true;
 }
 
+void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
+    transmit(reply.output);
+    if (reply.exited) {
+        m_mode = Bds5DriveMode::Interactive;
+        return sendPrompt();
+    }
+    m_promptPending = true;
+}
+
 void Bds5Drive::programStopped(ProgramStop stop, const std::optional<Bds5Error>& error) {
     m_executor.stop();
     if (stop == ProgramStop::Kill) m_state.enabled = false;
@@ -325,8 +371,41 @@ void Bds5Drive::sendPrompt() {
 
 void Bds5Drive::transmit(std::string_view bytes) {
     if (bytes.empty()) return;
-    m_transmitted.append(bytes);
+    m_txFifo.append(bytes);
     m_atLineStart = bytes.back() == '\n';
+}
+
+// The UART sends at the BAUD rate, ten bits a character (8N1, L10118-10147); SERIAL is ON when idle.
+void Bds5Drive::driveUart(Microseconds dt) {
+    m_txCredit += double(dt.count()) * m_baud / 10.0 / 1e6;
+    const std::size_t waiting = m_txFifo.size() - m_txHead;
+    const std::size_t n = std::min(waiting, std::size_t(m_txCredit));
+    m_transmitted.append(m_txFifo, m_txHead, n);
+    m_txHead += n;
+    m_txCredit -= double(n);
+    if (m_txHead == m_txFifo.size()) { // idle line: no credit is banked for later
+        m_txFifo.clear();
+        m_txHead = 0;
+        m_txCredit = std::min(m_txCredit, 1.0);
+    } else if (m_txHead > 4096) {
+        m_txFifo.erase(0, m_txHead);
+        m_txHead = 0;
+    }
+    m_state.variables.set("SERIAL", transmitting() ? 0 : 1);
+}
+
+// The rate is fixed at power-up from BAUD (ABAUD off, MOTION on); an invalid BAUD logs ERR 103 to the
+// history only (digest §2.2). Autobaud on CRs arrives with the serial issue.
+void Bds5Drive::chooseBaudRate() {
+    const std::int32_t baud = m_state.variables.read("BAUD").value_or(9600);
+    for (const int valid : {300, 600, 1200, 2400, 4800, 9600, 19200}) {
+        if (baud == valid) {
+            m_baud = baud;
+            return;
+        }
+    }
+    logError(m_state, 103);
+    m_baud = 9600;
 }
 
 bool Bds5Drive::switchOn(std::string_view name, bool fallback) const {

@@ -5,6 +5,7 @@
 
 #include "bds5_executor.h"
 #include "bds5_interpreter.h"
+#include "bds5_resident_editor.h"
 #include "drive_core/drive.h"
 
 #include <array>
@@ -17,7 +18,7 @@ namespace drive_core::bds5 {
 // simulator follows (v3.0.0) and that it is a simulation, so no user mistakes it for hardware.
 inline constexpr std::string_view kSignOn = "BDS5 DIGITAL SERVO DRIVE  V3.0.0  (SERVODESK SIMULATION)";
 
-enum class Bds5DriveMode { Interactive, Running, Monitor, ProgramLoad };
+enum class Bds5DriveMode { Interactive, Running, Monitor, ProgramLoad, Editor };
 
 class Bds5Drive final : public Drive {
 public:
@@ -30,8 +31,10 @@ public:
     void step(Microseconds dt) override;
     Microseconds now() const override { return m_time; }
 
-    int inputCount() const override { return int(m_inputs.size()); }
-    int outputCount() const override { return int(m_outputs.size()); }
+    static constexpr int kInputCount = 16; // I1-I16
+    static constexpr int kOutputCount = 8; // O1-O8
+    int inputCount() const override { return kInputCount; }
+    int outputCount() const override { return kOutputCount; }
     void setInput(int number, bool on) override;
     bool input(int number) const override;
     bool output(int number) const override;
@@ -42,6 +45,9 @@ public:
 
     Bds5DriveMode mode() const { return m_mode; }
     bool promptPending() const { return m_promptPending; }
+    // The UART still has bytes to send (they leave at the BAUD rate, 8N1: ten bits a character).
+    bool transmitting() const { return m_txHead < m_txFifo.size(); }
+    int baudRate() const { return m_baud; }
     const Bds5State& state() const { return m_state; }
 
 private:
@@ -52,21 +58,31 @@ private:
     void interactiveLine(const std::string& line);
     void monitorLine(const std::string& line);
     void loadLine(std::string line);
+    void editorReply(const Bds5ResidentEditor::Reply& reply);
     void applyTerminalFlow(const Outcome& outcome);
     void runProgram(int label);
+    void runProgram();
     void programStopped(ProgramStop stop, const std::optional<Bds5Error>& error);
     void sendError(const Bds5Error& error, std::string_view preamble);
     void sendHeldErrors(std::string_view preamble);
     void sendPrompt();
     void transmit(std::string_view bytes);
     bool switchOn(std::string_view name, bool fallback) const;
+    void tickTimers(Microseconds dt);
+    void driveUart(Microseconds dt);
+    void chooseBaudRate();
 
     Bds5State m_state;
     Bds5Interpreter m_interpreter{m_state};
     Bds5Executor m_executor{m_state, m_interpreter};
+    Bds5ResidentEditor m_editor{m_state.program};
     Bds5DriveMode m_mode = Bds5DriveMode::Interactive;
     std::string m_received;    // UART receive buffer, not yet processed
-    std::string m_transmitted; // UART transmit buffer, not yet taken by the host side
+    std::string m_txFifo;      // bytes the processor has written to the UART, from m_txHead on not yet sent
+    std::size_t m_txHead = 0;
+    double m_txCredit = 0;     // characters the line may carry now
+    int m_baud = 9600;
+    std::string m_transmitted; // bytes that have left the UART, not yet taken by the host side
     std::string m_line;        // the instruction being typed
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
@@ -75,8 +91,7 @@ private:
     bool m_atLineStart = true;
     bool m_powered = false;
     Microseconds m_time{0};
-    std::array<bool, 16> m_inputs{}; // I1-I16
-    std::array<bool, 8> m_outputs{}; // O1-O8
+    Microseconds m_timerRemainder{0};
 };
 
 } // namespace drive_core::bds5

@@ -1,4 +1,4 @@
-// BDS5 main-task execution and control flow (L3728-4103, Table 4.2, App. F).
+// BDS5 task scheduling and control flow (L3728-4103, L4551-5025, Tables 4.2 and 4.5, App. F).
 #include "bds5_executor.h"
 
 #include "drive_core/catalog/bds5_catalog.h"
@@ -10,8 +10,20 @@ namespace drive_core::bds5 {
 using namespace std::chrono_literals;
 
 namespace {
-constexpr int kMaxLinesPerAdvance = 10000; // a runaway loop of zero-cost lines cannot hang a tick
+constexpr int kMaxLinesPerAdvance = 100000; // bounds one call; zero-cost lines do not exist
+
+bool isMainLabel(DedicatedLabel l) {
+    return l == DedicatedLabel::PowerUp || l == DedicatedLabel::Auto || l == DedicatedLabel::Manual ||
+           l == DedicatedLabel::Error;
 }
+
+constexpr DedicatedLabel kAlarmLabels[] = {DedicatedLabel::AlarmA, DedicatedLabel::AlarmB, DedicatedLabel::AlarmC};
+bool printsText(const LexedLine& line) {
+    if (line.entries.empty()) return false;
+    const std::string& w = line.entries.front().text;
+    return w == "P" || w == "PS" || w == "PA" || w == "PAS" || w == "R" || w == "RS" || w == "INPUT";
+}
+} // namespace
 
 Microseconds Bds5Executor::costOf(const LexedLine& line) {
     if (line.entries.empty()) return 1000us; // a comment line: read like a label line (chosen)
@@ -27,26 +39,114 @@ Microseconds Bds5Executor::costOf(const LexedLine& line) {
     if (w == "NORM") return 2000us;
     if (w == "MA" || w == "MI") return 5500us;
     if (w == "JT" || w == "JF") return 5800us;
-    if (w.find('=') != std::string::npos || line.entries.size() == 2) return 2000us; // X1=X2+1: 1.7-2.3 ms
-    return 2000us;
+    return 2000us; // assignments 1.7-2.3 ms, O1 ON 1.9 ms
 }
 
-void Bds5Executor::start(int line, Microseconds now) {
-    m_running = true;
-    m_pc = line;
-    m_busyUntil = now;
-    m_gosub.clear();
-    m_ifDepth = 0;
+void Bds5Executor::start(std::optional<int> mainLine, Microseconds now) {
+    stop();
+    m_multitasking = true;
+    m_cpu = now;
+    if (mainLine) launch(TaskLevel::Main, *mainLine);
+    pollAlarms(true);
+}
+
+void Bds5Executor::stop() {
+    for (Task& t : m_tasks) t = Task{};
+    m_alarmLast.fill(std::nullopt);
+    m_multitasking = false;
+    m_current.reset();
+}
+
+void Bds5Executor::launch(TaskLevel level, int line) {
+    Task& t = task(level);
+    t = Task{};
+    t.active = true;
+    t.pc = line;
+}
+
+bool Bds5Executor::hasDedicatedTasks() const {
+    const Bds5Program& p = m_state.program;
+    for (const auto l : {DedicatedLabel::AlarmA, DedicatedLabel::AlarmB, DedicatedLabel::AlarmC,
+                         DedicatedLabel::Variable, DedicatedLabel::Background, DedicatedLabel::Auto,
+                         DedicatedLabel::Manual})
+        if (p.dedicatedLine(l)) return true;
+    return false;
+}
+
+void Bds5Executor::fireVariableTask() {
+    const auto line = m_state.program.dedicatedLine(DedicatedLabel::Variable);
+    if (!m_multitasking || !line || task(TaskLevel::Variable).active) return;
+    if (m_state.variables.read("MULTI").value_or(1) == 0) return; // MULTI OFF holds VARIABLE$ (L4569)
+    launch(TaskLevel::Variable, *line + 1);
+}
+
+// Alarms fire on the edge of their switch; at the moment multitasking is enabled, on its level (L6582).
+void Bds5Executor::pollAlarms(bool atEnable) {
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto alarm = m_state.program.alarm(kAlarmLabels[i]);
+        if (!alarm) continue;
+        const auto value = m_state.variables.read(alarm->switchName);
+        if (!value) continue;
+        const bool inState = (*value != 0) == alarm->on;
+        const bool wasInState = m_alarmLast[i].value_or(!inState);
+        m_alarmLast[i] = inState;
+        const bool multiOff = i == 2 && m_state.variables.read("MULTI").value_or(1) == 0; // C$ needs MULTI
+        if (inState && (atEnable || !wasInState) && !m_tasks[i].active && !multiOff)
+            launch(TaskLevel(i), alarm->line + 1);
+    }
+}
+
+bool Bds5Executor::idle(const Task& t) const {
+    if (!t.active) return true;
+    if (t.waitPrinter && m_state.serialBusy) return true;
+    if (t.wakeAt > m_cpu) return true;
+    if (t.hold) {
+        const auto v = m_state.variables.read(*t.hold);
+        if (v && (*v != 0) != t.holdOn) return true;
+    }
+    return false;
+}
+
+std::optional<Microseconds> Bds5Executor::nextWake() const {
+    std::optional<Microseconds> wake;
+    for (const Task& t : m_tasks)
+        if (t.active && t.wakeAt > m_cpu && !t.hold && (!wake || t.wakeAt < *wake)) wake = t.wakeAt;
+    return wake;
 }
 
 ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optional<Bds5Error>& error) {
-    for (int n = 0; m_running && m_busyUntil <= now && n < kMaxLinesPerAdvance; ++n) {
-        const ProgramStop stop = executeLine(out, error);
+    if (!m_multitasking) return ProgramStop::Break;
+    for (int n = 0; m_multitasking && m_cpu < now && n < kMaxLinesPerAdvance; ++n) {
+        pollAlarms(false);
+        // MULTI OFF disables alarm C, variable input and background (not A/B) (L4569-4577).
+        const bool multi = m_state.variables.read("MULTI").value_or(1) != 0;
+        std::optional<TaskLevel> pick;
+        for (std::size_t i = 0; i < kTaskCount && !pick; ++i) {
+            const auto level = TaskLevel(i);
+            if (!multi && (level == TaskLevel::AlarmC || level == TaskLevel::Variable ||
+                           level == TaskLevel::Background))
+                continue;
+            if (!idle(m_tasks[i])) pick = level;
+        }
+        if (!pick && multi && !task(TaskLevel::Background).active) { // background restarts whenever all idle
+            if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::Background)) {
+                launch(TaskLevel::Background, *line + 1);
+                pick = TaskLevel::Background;
+            }
+        }
+        if (!pick) {
+            const auto wake = nextWake();
+            m_cpu = wake && *wake < now ? *wake : now;
+            continue;
+        }
+        m_current = pick;
+        const ProgramStop stop = executeLine(*pick, out, error);
         if (stop != ProgramStop::Running) {
-            m_running = false;
+            this->stop(); // a break, kill or breaking error stops every task
             return stop;
         }
     }
+    if (m_cpu < now && m_multitasking) m_cpu = now; // bounded work per call: never fall behind forever
     return ProgramStop::Running;
 }
 
@@ -54,18 +154,34 @@ ProgramStop Bds5Executor::fail(Bds5Error e, std::optional<Bds5Error>& out) {
     const auto* info = catalog::bds5::findError(e.code);
     logError(m_state, e.code);
     out = std::move(e);
-    // Severity 1 is a message only; 2 and above break the program (Table D.1).
+    // Severity 1 is a message only; 2 and above break the program (Table D.1). 53 "breaks program
+    // execution" despite its level (L7295).
     if (info && info->severity <= catalog::bds5::Severity::Warning && out->code != 53) return ProgramStop::Running;
     return ProgramStop::Error;
 }
 
-ProgramStop Bds5Executor::executeLine(std::string& out, std::optional<Bds5Error>& error) {
+// END stops this task only; with no dedicated tasks in the program END is B (L4579-4601).
+ProgramStop Bds5Executor::endTask(TaskLevel level) {
+    task(level).active = false;
+    if (level == TaskLevel::Main && !hasDedicatedTasks()) return ProgramStop::Break;
+    return ProgramStop::Running;
+}
+
+ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::optional<Bds5Error>& error) {
+    Task& t = task(level);
     const Bds5Program& program = m_state.program;
-    if (m_pc < 1 || m_pc > program.lineCount()) return ProgramStop::Break; // ran off the end: as END
-    const int line = m_pc;
+    if (t.pc < 1 || t.pc > program.lineCount()) return endTask(level); // ran off the end: as END
+    const int line = t.pc;
     const LexedLine& lexed = program.lexed(line);
-    m_busyUntil += costOf(lexed); // lines follow one another without gaps: simulated time is exact
-    ++m_pc;
+    if (printsText(lexed)) {
+        // A printing command idles before it runs until the previous print has left (L4637).
+        t.waitPrinter = m_state.serialBusy;
+        if (t.waitPrinter) return ProgramStop::Running;
+        m_state.serialBusy = true;
+    }
+    m_cpu += costOf(lexed); // lines follow one another without gaps: simulated time is exact
+    ++t.pc;
+    t.hold.reset();
     if (lexed.entries.empty()) {
         // An empty lexed line is a comment, or a line with quote damage: lex it again for the error.
         auto again = lexLine(program.line(line));
@@ -75,96 +191,109 @@ ProgramStop Bds5Executor::executeLine(std::string& out, std::optional<Bds5Error>
         }
         return ProgramStop::Running;
     }
-    if (Bds5Program::numericLabel(lexed)) return ProgramStop::Running; // a label line is a 1 ms no-op
+    const bool mainLevel = level == TaskLevel::Main;
+    if (Bds5Program::numericLabel(lexed)) { // a label line is a 1 ms no-op at the main level
+        if (mainLevel) return ProgramStop::Running;
+        return fail(Bds5Error{63, lexed.entries[0].text, line}, error); // "cannot execute a label" (L5023)
+    }
     if (const auto dedicated = Bds5Program::dedicatedLabel(lexed)) {
         // Main-level labels fall through; another task's code is never entered sequentially (chosen).
-        const bool mainLevel = *dedicated == DedicatedLabel::PowerUp || *dedicated == DedicatedLabel::Auto ||
-                               *dedicated == DedicatedLabel::Manual;
-        return mainLevel ? ProgramStop::Running : ProgramStop::Break;
+        if (mainLevel && isMainLabel(*dedicated)) return ProgramStop::Running;
+        return endTask(level);
     }
 
     const Outcome o = m_interpreter.execute(lexed.entries, ExecContext{Origin::Program, line}, out);
     if (o.error) return fail(*o.error, error);
+    const bool subroutinesAllowed = mainLevel; // no GOTO/GOSUB/RET in alarms, VARIABLE$, BACKGROUND$ (L4770)
     switch (o.flow) {
     case Flow::Next: return ProgramStop::Running;
     case Flow::Goto:
     case Flow::Gosub: {
+        if (!subroutinesAllowed) return fail(Bds5Error{63, lexed.entries[0].text, line}, error);
         const auto target = program.labelLine(o.target);
         if (!target) return fail(Bds5Error{70, std::to_string(o.target), line}, error);
         if (o.flow == Flow::Gosub) {
-            if (int(m_gosub.size()) >= kMaxGosubLevels) return fail(Bds5Error{118, lexed.entries[0].text, line}, error);
-            m_gosub.push_back(Frame{m_pc, m_ifDepth});
+            if (int(t.gosub.size()) >= kMaxGosubLevels) return fail(Bds5Error{118, lexed.entries[0].text, line}, error);
+            t.gosub.push_back(Frame{t.pc, t.ifDepth});
         }
-        m_ifDepth = 0; // jumping out of IF blocks closes them (L4093-4103)
-        m_pc = *target;
+        t.ifDepth = 0; // jumping out of IF blocks closes them (L4093-4103)
+        t.pc = *target;
         return ProgramStop::Running;
     }
     case Flow::Return:
-        if (m_gosub.empty()) return fail(Bds5Error{119, "RET", line}, error);
-        m_pc = m_gosub.back().returnLine;
-        m_ifDepth = m_gosub.back().ifDepth;
-        m_gosub.pop_back();
+        if (!subroutinesAllowed) return fail(Bds5Error{63, "RET", line}, error);
+        if (t.gosub.empty()) return fail(Bds5Error{119, "RET", line}, error);
+        t.pc = t.gosub.back().returnLine;
+        t.ifDepth = t.gosub.back().ifDepth;
+        t.gosub.pop_back();
         return ProgramStop::Running;
-    case Flow::Repeat: m_pc = line; return ProgramStop::Running;
-    case Flow::Dwell: m_busyUntil += std::chrono::milliseconds(o.target); return ProgramStop::Running;
+    case Flow::Repeat: t.pc = line; return ProgramStop::Running;
+    case Flow::Dwell: t.wakeAt = m_cpu + std::chrono::milliseconds(o.target); return ProgramStop::Running;
+    case Flow::Hold:
+        t.hold = o.text;
+        t.holdOn = o.condition;
+        return ProgramStop::Running;
     case Flow::If:
-    case Flow::Elif: {
-        if (o.flow == Flow::Elif) { // reached in sequence: the block before it ran, skip to ENDIF
-            if (m_ifDepth == 0) return fail(Bds5Error{116, "ELIF", line}, error);
-            const auto end = findBlockEnd(line, true);
-            if (!end) return fail(Bds5Error{115, "ELIF", line}, error);
-            m_pc = *end;
-            return ProgramStop::Running;
-        }
-        ++m_ifDepth;
-        int at = line;
-        bool taken = o.condition;
-        while (!taken) { // try the ELIFs in turn, then the ELSE; every condition costs its line's time
-            const auto next = findBlockEnd(at, false);
-            if (!next) return fail(Bds5Error{115, "IF", line}, error);
-            const LexedLine& l = program.lexed(*next);
-            const std::string& w = l.entries.front().text;
-            at = *next;
-            if (w == "ELIF") {
-                m_busyUntil += costOf(l);
-                const Outcome c = m_interpreter.execute(l.entries, ExecContext{Origin::Program, at}, out);
-                if (c.error) return fail(*c.error, error);
-                taken = c.condition;
-            } else {
-                taken = true; // ELSE runs its block; ENDIF closes with nothing run
-                if (w == "ENDIF") {
-                    m_pc = at; // execute the ENDIF line itself (it shows in a trace)
-                    return ProgramStop::Running;
-                }
-            }
-        }
-        m_pc = at + 1;
-        return ProgramStop::Running;
-    }
+    case Flow::Elif: return applyIf(t, line, o, out, error);
     case Flow::Else: {
-        if (m_ifDepth == 0) return fail(Bds5Error{116, "ELSE", line}, error);
+        if (t.ifDepth == 0) return fail(Bds5Error{116, "ELSE", line}, error);
         const auto end = findBlockEnd(line, true);
         if (!end) return fail(Bds5Error{115, "ELSE", line}, error);
-        m_pc = *end;
+        t.pc = *end;
         return ProgramStop::Running;
     }
     case Flow::Endif:
-        if (m_ifDepth == 0) return fail(Bds5Error{116, "ENDIF", line}, error);
-        --m_ifDepth;
+        if (t.ifDepth == 0) return fail(Bds5Error{116, "ENDIF", line}, error);
+        --t.ifDepth;
         return ProgramStop::Running;
-    case Flow::End:
+    case Flow::End: return endTask(level);
     case Flow::Break: return ProgramStop::Break;
     case Flow::Kill: return ProgramStop::Kill;
     case Flow::Stop: return ProgramStop::Running; // S in a program stops motion only (motion: issue 4)
     case Flow::Run: { // v3: RUN inside a program restarts at the label (L9307)
-        const auto target = o.target < 0 ? std::optional<int>(1) : program.labelLine(o.target);
-        if (!target) return fail(Bds5Error{70, std::to_string(o.target), line}, error);
-        start(*target, m_busyUntil);
+        const auto target = o.target < 0 ? std::optional<int>() : program.labelLine(o.target);
+        if (o.target >= 0 && !target) return fail(Bds5Error{70, std::to_string(o.target), line}, error);
+        start(target, m_cpu);
         return ProgramStop::Running;
     }
     case Flow::Load:
-    case Flow::List: return fail(Bds5Error{53, lexed.entries[0].text, line}, error);
+    case Flow::List:
+    case Flow::Edit: return fail(Bds5Error{53, lexed.entries[0].text, line}, error);
     }
+    return ProgramStop::Running;
+}
+
+ProgramStop Bds5Executor::applyIf(Task& t, int line, const Outcome& o, std::string& out,
+                                  std::optional<Bds5Error>& error) {
+    const Bds5Program& program = m_state.program;
+    if (o.flow == Flow::Elif) { // reached in sequence: the block before it ran, skip to ENDIF
+        if (t.ifDepth == 0) return fail(Bds5Error{116, "ELIF", line}, error);
+        const auto end = findBlockEnd(line, true);
+        if (!end) return fail(Bds5Error{115, "ELIF", line}, error);
+        t.pc = *end;
+        return ProgramStop::Running;
+    }
+    ++t.ifDepth;
+    int at = line;
+    bool taken = o.condition;
+    while (!taken) { // try the ELIFs in turn, then the ELSE; every condition costs its line's time
+        const auto next = findBlockEnd(at, false);
+        if (!next) return fail(Bds5Error{115, "IF", line}, error);
+        const LexedLine& l = program.lexed(*next);
+        at = *next;
+        if (l.entries.front().text == "ELIF") {
+            m_cpu += costOf(l);
+            const Outcome c = m_interpreter.execute(l.entries, ExecContext{Origin::Program, at}, out);
+            if (c.error) return fail(*c.error, error);
+            taken = c.condition;
+        } else if (l.entries.front().text == "ENDIF") {
+            t.pc = at; // execute the ENDIF line itself (it shows in a trace)
+            return ProgramStop::Running;
+        } else {
+            taken = true; // ELSE runs its block
+        }
+    }
+    t.pc = at + 1;
     return ProgramStop::Running;
 }
 

@@ -1,11 +1,14 @@
-// Runs the user program: the main task's program counter, GOSUB stack, IF nesting, dwell, and the time
-// each line costs (App. F). The interpreter executes each instruction; the executor applies its Flow.
+// Runs the user program's tasks (Table 4.5): alarms A/B/C, VARIABLE$, the main level (POWER-UP$,
+// AUTO$, MANUAL$, n$, ERROR$) and BACKGROUND$, on one simulated processor. Each line costs its App. F
+// time; the highest-priority task that is not idling runs. The interpreter executes each instruction;
+// the executor applies the Flow it returns.
 #pragma once
 
 #include "bds5_interpreter.h"
 
 #include "drive_core/drive.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,9 +17,13 @@ namespace drive_core::bds5 {
 
 constexpr int kMaxGosubLevels = 4; // ERR 118 on the fifth (L3791-3821)
 
+// Task levels, highest priority first (Table 4.5, L4603-4615).
+enum class TaskLevel { AlarmA, AlarmB, AlarmC, Variable, Main, Background };
+constexpr std::size_t kTaskCount = 6;
+
 // Why the program stopped.
 enum class ProgramStop {
-    Running, // still going (or idle in a dwell)
+    Running, // multitasking still enabled (a task runs, idles, or the drive is dormant)
     Break,   // B, END with no other task, end of program: back to interactive
     Error,   // a breaking error (severity >= 2): message printed, back to interactive
     Kill,    // K: drive disabled, back to interactive
@@ -26,13 +33,19 @@ class Bds5Executor {
 public:
     Bds5Executor(Bds5State& state, Bds5Interpreter& interpreter) : m_state(state), m_interpreter(interpreter) {}
 
-    // Starts the main task at a program line (the label line itself runs first, costing its 1 ms).
-    void start(int line, Microseconds now);
-    void stop() { m_running = false; }
-    bool running() const { return m_running; }
+    // RUN [label]: enables multitasking and, with a line, starts the main task there (the label line
+    // itself runs first, costing its 1 ms). Alarms whose switch is already in state fire at once (L6582).
+    void start(std::optional<int> mainLine, Microseconds now);
+    // B / ^X / power-down: every task stops, multitasking is disabled.
+    void stop();
+    bool running() const { return m_multitasking; }
+    // ^V: fires VARIABLE$ if the program has one and multitasking allows it (L4818).
+    void fireVariableTask();
+    // The level whose line runs next (for task prompts in single-step and trace, Table 5.1).
+    std::optional<TaskLevel> currentTask() const { return m_current; }
 
-    // Executes every line whose time has come by `now`. Output goes to out; a breaking error is returned
-    // through error (already logged). Returns whether the program still runs.
+    // Executes every line whose time has come by `now`. Output goes to out; an error is returned through
+    // error (already logged; a warning leaves the program running).
     ProgramStop advance(Microseconds now, std::string& out, std::optional<Bds5Error>& error);
 
     // Cost of one line in microseconds (App. F, L7723-7775; 2 ms where the appendix is silent — chosen).
@@ -43,19 +56,37 @@ private:
         int returnLine;
         int ifDepth;
     };
+    struct Task {
+        bool active = false;
+        int pc = 0;
+        std::vector<Frame> gosub;
+        int ifDepth = 0;
+        Microseconds wakeAt{0};           // D: idle until then
+        std::optional<std::string> hold;  // H: idle until this switch ...
+        bool holdOn = true;               // ... is in this state
+        bool waitPrinter = false;         // a print waits for the serial port (pre-execution idle)
+    };
 
-    ProgramStop executeLine(std::string& out, std::optional<Bds5Error>& error);
+    Task& task(TaskLevel level) { return m_tasks[std::size_t(level)]; }
+    void launch(TaskLevel level, int line);
+    void pollAlarms(bool atEnable);
+    bool idle(const Task& t) const;
+    bool hasDedicatedTasks() const;
+    std::optional<Microseconds> nextWake() const;
+    ProgramStop executeLine(TaskLevel level, std::string& out, std::optional<Bds5Error>& error);
+    ProgramStop endTask(TaskLevel level);
     ProgramStop fail(Bds5Error error, std::optional<Bds5Error>& out);
+    ProgramStop applyIf(Task& t, int line, const Outcome& o, std::string& out, std::optional<Bds5Error>& error);
     // From an IF/ELIF line, the next ELIF/ELSE/ENDIF of the same block (or its ENDIF when toEndif).
     std::optional<int> findBlockEnd(int from, bool toEndif) const;
 
     Bds5State& m_state;
     Bds5Interpreter& m_interpreter;
-    bool m_running = false;
-    int m_pc = 0;                 // next line to execute
-    Microseconds m_busyUntil{0};  // the line being executed finishes then
-    std::vector<Frame> m_gosub;
-    int m_ifDepth = 0;
+    std::array<Task, kTaskCount> m_tasks;
+    std::array<std::optional<bool>, 3> m_alarmLast; // last sampled state of each alarm's switch
+    bool m_multitasking = false;
+    Microseconds m_cpu{0}; // the processor has executed everything up to this time
+    std::optional<TaskLevel> m_current;
 };
 
 } // namespace drive_core::bds5

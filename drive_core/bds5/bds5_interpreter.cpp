@@ -72,7 +72,7 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         return {std::nullopt, word == "IF" ? Flow::If : Flow::Elif, 0, *c};
     }
     if (word == "ELSE" || word == "ENDIF" || word == "RET" || word == "END" || word == "B" || word == "S" ||
-        word == "K" || word == "<BDS") {
+        word == "K" || word == "<BDS" || word == "ED") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
         if (word == "K") m_state.enabled = false;
         const Flow flow = word == "ELSE"    ? Flow::Else
@@ -82,6 +82,7 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
                           : word == "B"     ? Flow::Break
                           : word == "S"     ? Flow::Stop
                           : word == "K"     ? Flow::Kill
+                          : word == "ED"    ? Flow::Edit
                                             : Flow::List;
         return {std::nullopt, flow};
     }
@@ -101,6 +102,16 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         if (r.error) return {Bds5Error{r.error, args.front().text, 0}};
         if (r.value < 0) return {Bds5Error{83, args.front().text, 0}};
         return {std::nullopt, Flow::Dwell, r.value};
+    }
+    if (word == "H") { // H <switch> ON|OFF — any switch but REMOTE and XS11-XS50 (L4450-4477)
+        if (args.size() != 2) return {Bds5Error{82, joined(entries), 0}};
+        const auto ref = cat::findVariable(args[0].text);
+        if (!ref || !ref->info->isSwitch) return {Bds5Error{83, args[0].text, 0}};
+        if (args[0].text == "REMOTE" || (ref->info->name == "XS" && ref->index > 10))
+            return {Bds5Error{89, args[0].text, 0}};
+        const auto state = parseConstant(args[1].text);
+        if (!state || (*state != 0 && *state != 1)) return {Bds5Error{83, args[1].text, 0}};
+        return {std::nullopt, Flow::Hold, 0, *state == 1, args[0].text};
     }
     if (word == "P" || word == "PS") return {print(entries, true, out)};
     if (word == "PA" || word == "PAS") return {print(entries, false, out)};

@@ -21,6 +21,7 @@ struct Bds5State {
     Bds5Program program;
     std::deque<int> errorHistory; // ERR HIST, newest first, at most 20 entries (L6110-6148)
     bool enabled = false;         // drive enabled (EN) / inhibited (DIS, K)
+    bool serialBusy = false;      // the UART is still sending: printing commands idle before running
 };
 
 constexpr std::size_t kErrorHistorySize = 20;
@@ -48,9 +49,11 @@ enum class Flow {
     Stop,     // S: stop motion (and, from monitor, break)
     Repeat,   // TIL not yet satisfied: run this line again
     Dwell,    // D: idle for target milliseconds
+    Hold,     // H: idle until switch `text` is ON (condition true) or OFF
     Run,      // RUN [label]: target = label, or -1 for "enable multitasking only"
     Load,     // >BDS [password]: text = password
     List,     // <BDS
+    Edit,     // ED: enter the resident editor
     If,       // IF c: condition
     Elif,     // ELIF c: condition
     Else,

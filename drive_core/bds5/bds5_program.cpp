@@ -1,6 +1,7 @@
 // BDS5 program memory and label index.
 #include "bds5_program.h"
 
+#include <algorithm>
 #include <charconv>
 
 namespace drive_core::bds5 {
@@ -17,6 +18,32 @@ bool Bds5Program::append(std::string line) {
     m_lines.push_back(std::move(line));
     m_indexed = false;
     return true;
+}
+
+bool Bds5Program::insert(int beforeLine, std::string line) {
+    if (m_sizeChars + line.size() + 1 > kProgramCapacityChars) return false;
+    const auto at = std::size_t(std::clamp(beforeLine, 1, lineCount() + 1) - 1);
+    m_sizeChars += line.size() + 1;
+    m_lines.insert(m_lines.begin() + std::ptrdiff_t(at), std::move(line));
+    m_indexed = false;
+    return true;
+}
+
+bool Bds5Program::replace(int number, std::string line) {
+    std::string& old = m_lines.at(std::size_t(number - 1));
+    if (m_sizeChars - old.size() + line.size() > kProgramCapacityChars) return false;
+    m_sizeChars = m_sizeChars - old.size() + line.size();
+    old = std::move(line);
+    m_indexed = false;
+    return true;
+}
+
+void Bds5Program::erase(int first, int last) {
+    first = std::max(first, 1);
+    last = std::min(last, lineCount());
+    for (int n = first; n <= last; ++n) m_sizeChars -= m_lines[std::size_t(n - 1)].size() + 1;
+    if (first <= last) m_lines.erase(m_lines.begin() + (first - 1), m_lines.begin() + last);
+    m_indexed = false;
 }
 
 const LexedLine& Bds5Program::lexed(int number) const {

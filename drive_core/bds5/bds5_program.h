@@ -31,6 +31,14 @@ public:
     // Appends one line as received by >BDS or typed in the editor's insert mode. False (ERR 86) when
     // the memory is full; the line is then not stored.
     bool append(std::string line);
+    // The resident editor's changes (lines count from 1). False (ERR 86) when memory would overflow.
+    bool insert(int beforeLine, std::string line);
+    bool replace(int number, std::string line);
+    void erase(int first, int last);
+    // The editor password (PASS, up to six characters; empty = none). NEW clears it; >BDS keeps it.
+    const std::string& password() const { return m_password; }
+    void setPassword(std::string password) { m_password = std::move(password); }
+
     std::size_t sizeChars() const { return m_sizeChars; }
     int lineCount() const { return int(m_lines.size()); }
     const std::string& line(int number) const { return m_lines.at(std::size_t(number - 1)); }
@@ -57,6 +65,7 @@ private:
 
     std::vector<std::string> m_lines;
     std::size_t m_sizeChars = 0;
+    std::string m_password;
     // Derived on demand after a change.
     mutable bool m_indexed = false;
     mutable std::vector<LexedLine> m_lexed;

@@ -1,6 +1,8 @@
 // BDS5 variable memory.
 #include "bds5_variable_store.h"
 
+#include <string>
+
 namespace drive_core::bds5 {
 
 namespace cat = catalog::bds5;
@@ -40,7 +42,29 @@ std::optional<std::int32_t> Bds5VariableStore::read(std::string_view upperName) 
     return read(*ref);
 }
 
-std::int32_t Bds5VariableStore::read(const cat::VariableRef& ref) const { return m_values[slot(ref)]; }
+std::int32_t Bds5VariableStore::read(const cat::VariableRef& ref) const {
+    if (const auto w = word(ref)) return *w;
+    return m_values[slot(ref)];
+}
+
+std::optional<std::int32_t> Bds5VariableStore::word(const cat::VariableRef& ref) const {
+    const bool in = ref.info->name == "IN";
+    if (!in && ref.info->name != "OUT") return std::nullopt;
+    const auto bits = cat::findVariable(in ? "I1" : "O1");
+    if (!bits) return std::nullopt;
+    const int count = bits->info->lastIndex;
+    std::int32_t w = 0;
+    for (int i = 1; i <= count; ++i)
+        if (m_values[slot(cat::VariableRef{bits->info, i})] != 0) w |= std::int32_t(1) << (i - 1);
+    return w;
+}
+
+void Bds5VariableStore::setBits(std::string_view stem, int count, std::int32_t w) {
+    const auto bits = cat::findVariable(std::string(stem) + "1");
+    if (!bits) return;
+    for (int i = 1; i <= count && i <= bits->info->lastIndex; ++i)
+        m_values[slot(cat::VariableRef{bits->info, i})] = (w >> (i - 1)) & 1;
+}
 
 int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, bool driveEnabled) {
     const auto ref = cat::findVariable(upperName);
@@ -55,11 +79,15 @@ int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, boo
     case cat::WriteCondition::NoMotion: break;
     }
     if (value < cat::minimumOf(*ref->info) || value > cat::maximumOf(*ref->info)) return 83;
-    m_values[slot(*ref)] = std::int32_t(value);
+    set(*ref, std::int32_t(value));
     return 0;
 }
 
-void Bds5VariableStore::set(const cat::VariableRef& ref, std::int32_t value) { m_values[slot(ref)] = value; }
+void Bds5VariableStore::set(const cat::VariableRef& ref, std::int32_t value) {
+    if (ref.info->name == "OUT") return setBits("O", 8, value);
+    if (ref.info->name == "IN") return setBits("I", 16, value);
+    m_values[slot(ref)] = value;
+}
 
 void Bds5VariableStore::set(std::string_view upperName, std::int32_t value) {
     if (const auto ref = cat::findVariable(upperName)) set(*ref, value);

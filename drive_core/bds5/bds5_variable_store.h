@@ -30,6 +30,9 @@ public:
     void set(std::string_view upperName, std::int32_t value);
 
 private:
+    // IN and OUT are the words of the I1-I16 and O1-O8 switches (I1 = bit 0): one memory, two views.
+    std::optional<std::int32_t> word(const catalog::bds5::VariableRef& ref) const;
+    void setBits(std::string_view stem, int count, std::int32_t word);
     std::size_t slot(const catalog::bds5::VariableRef& ref) const;
 
     std::vector<std::size_t> m_firstSlot; // per catalog entry, its first slot in m_values

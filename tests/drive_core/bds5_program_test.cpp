@@ -1,6 +1,6 @@
 // Program transcripts: download with >BDS as Motion Link does, upload with <BDS, RUN, monitor mode,
 // control flow and the errors RUN reports — the bytes the manual's examples show (seed-bds5 §2.9, §4.8, §9).
-#include "drive_core/bds5/bds5_drive.h"
+#include "bds5_test_drive.h"
 
 #include <gtest/gtest.h>
 
@@ -12,26 +12,7 @@ using namespace std::chrono_literals;
 
 namespace {
 
-class Bds5Program : public ::testing::Test {
-protected:
-    void SetUp() override {
-        drive.powerUp();
-        drive.step(1ms);
-        drive.takeTransmitted();
-    }
-    std::string type(std::string_view bytes, std::chrono::milliseconds run = 1ms) {
-        drive.receive(bytes);
-        for (auto t = 0ms; t < run; t += 1ms) drive.step(1ms);
-        return drive.takeTransmitted();
-    }
-    // >BDS, one line per l-> prompt, Esc (L9953-9968).
-    void download(const std::vector<std::string>& lines) {
-        ASSERT_EQ(type(">BDS\r"), ">BDS\r\nl->");
-        for (const std::string& l : lines) ASSERT_EQ(type(l + "\r"), l + "\r\nl->");
-        ASSERT_EQ(type("\x1b"), "\r\n-->");
-    }
-    Bds5Drive drive;
-};
+class Bds5Program : public ::testing::Test, public bds5_test::TestDrive {};
 
 } // namespace
 
@@ -175,7 +156,7 @@ TEST_F(Bds5Program, FaultWhileRunningPrintsAndBreaks) { // L9875-9884
     download({"6$", "D 100000"});
     type("RUN 6\r", 5ms);
     drive.raiseFault(17);
-    EXPECT_EQ(drive.takeTransmitted(), "\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
+    EXPECT_EQ(wait(0ms), "\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
 }
 
 TEST_F(Bds5Program, FaultInMonitorModeWaitsForCr) { // L9888-9935
@@ -183,7 +164,7 @@ TEST_F(Bds5Program, FaultInMonitorModeWaitsForCr) { // L9888-9935
     type("RUN 6\r", 5ms);
     type("\x1b");
     drive.raiseFault(17);
-    EXPECT_EQ(drive.takeTransmitted(), "");
+    EXPECT_EQ(wait(0ms), "");
     EXPECT_EQ(type("\r"), "\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
 }
 
@@ -200,8 +181,7 @@ TEST_F(Bds5Program, PowerUpLabelRunsAtPowerUp) { // L4929-4944, examples/bds5/48
     download({"POWER-UP$", "X1=X1+1", "B"});
     type("X1=0\r");
     drive.powerUp();
-    drive.step(20ms);
-    const std::string out = drive.takeTransmitted();
+    const std::string out = wait(20ms);
     EXPECT_NE(out.find("EXECUTING POWER-UP LABEL\r\n"), std::string::npos) << out;
     EXPECT_TRUE(out.ends_with("-->")) << out;
     EXPECT_EQ(type("P X1\r"), "P X1\r\n           1\r\n-->");

@@ -1,0 +1,118 @@
+// MainWindow against the simulated BDS5: what a user sees on start-up and after typing in the terminal.
+#include "app/drive_connection.h"
+#include "app/main_window.h"
+#include "app/terminal_widget.h"
+
+#include "drive_core/bds5/bds5_drive.h"
+#include "editor/program_editor.h"
+#include "resources/resources.h"
+
+#include <QFile>
+#include <QLabel>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTest>
+
+using app::MainWindow;
+
+namespace {
+constexpr int kDriveTimeoutMs = 10000;
+const QString kPrompt = QStringLiteral("-->");
+
+QString labelText(const MainWindow& window, const char* name) {
+    const auto* label = window.statusBar()->findChild<QLabel*>(QLatin1String(name));
+    return label ? label->text() : QStringLiteral("<no %1>").arg(QLatin1String(name));
+}
+
+QStringList terminalLines(const MainWindow& window) {
+    return window.terminal()->text().split(QLatin1Char('\n'));
+}
+
+bool driveReady(const MainWindow& window) {
+    const auto* session = window.connection().session();
+    return session && session->state() == serialport::Bds5Session::State::Ready;
+}
+} // namespace
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // never touch the user's settings
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDesk"));
+    }
+
+    void opensWithTheSampleProgram() {
+        MainWindow window;
+        resources::initialize();
+        QFile sample(resources::kSampleProgram);
+        QVERIFY(sample.open(QIODevice::ReadOnly));
+        const QString expected = QString::fromUtf8(sample.readAll());
+        QCOMPARE(window.editor()->text(), expected);
+        QVERIFY(window.editor()->text().contains(QStringLiteral("\n10$")));
+        QVERIFY(window.editor()->text().contains(QStringLiteral("P \"HELLO, WORLD\"")));
+        QVERIFY(!window.editor()->isModified());
+        QVERIFY(window.editor()->filePath().isEmpty()); // saving asks for a name, never writes the resource
+        QVERIFY(window.windowTitle().startsWith(QStringLiteral("hello.bds")));
+    }
+
+    void terminalShowsSignOnThenHelloWorld() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        const QString signOn = QString::fromLatin1(drive_core::bds5::kSignOn);
+        QTRY_VERIFY_WITH_TIMEOUT(window.terminal()->text().contains(signOn), kDriveTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(terminalLines(window).last() == kPrompt && driveReady(window),
+                                 kDriveTimeoutMs);
+        QCOMPARE(labelText(window, "linkLabel"), QStringLiteral("Simulated BDS5"));
+        QCOMPARE(labelText(window, "portLabel"), QStringLiteral("In-process, 9600 baud"));
+        QVERIFY2(labelText(window, "modeLabel").contains(QStringLiteral("Interactive -->")),
+                 qPrintable(labelText(window, "modeLabel")));
+        QVERIFY(labelText(window, "stateLabel").contains(QStringLiteral("Ready")));
+
+        QTest::keyClicks(window.terminal(), QStringLiteral("P \"HELLO, WORLD\""));
+        QTest::keyClick(window.terminal(), Qt::Key_Return);
+
+        // The drive echoes the line after the prompt, prints the text on a line of its own, prompts again.
+        const QString echo = QStringLiteral("-->P \"HELLO, WORLD\"");
+        const QString hello = QStringLiteral("HELLO, WORLD");
+        QTRY_VERIFY_WITH_TIMEOUT(terminalLines(window).contains(hello) &&
+                                     terminalLines(window).last() == kPrompt,
+                                 kDriveTimeoutMs);
+        const QStringList lines = terminalLines(window);
+        const qsizetype echoAt = lines.indexOf(echo);
+        QVERIFY2(echoAt >= 0, qPrintable(window.terminal()->text()));
+        QCOMPARE(lines.value(echoAt + 1), hello);
+        QCOMPARE(lines.value(echoAt + 2), kPrompt);
+        QCOMPARE(lines.size(), echoAt + 3);
+        QTRY_VERIFY_WITH_TIMEOUT(labelText(window, "modeLabel").contains(QStringLiteral("Interactive")),
+                                 kDriveTimeoutMs);
+    }
+
+    void linkErrorsShowInStatusBarAndTerminal() {
+        MainWindow window;
+        window.connectDrive(
+            app::ConnectionChoice::serialPort(QStringLiteral("/nonexistent/ttyServoDesk"), 9600));
+        QVERIFY(!window.connection().isConnected());
+        QVERIFY2(window.statusBar()->currentMessage().contains(QStringLiteral("/nonexistent/ttyServoDesk")),
+                 qPrintable(window.statusBar()->currentMessage()));
+        QVERIFY(window.terminal()->text().contains(QStringLiteral("[/nonexistent/ttyServoDesk")));
+        QVERIFY(labelText(window, "stateLabel").contains(QStringLiteral("Disconnected")));
+        QCOMPARE(labelText(window, "linkLabel"), QStringLiteral("/nonexistent/ttyServoDesk 9600 8N1"));
+    }
+
+    void disconnectClosesTheLink() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        QTRY_VERIFY_WITH_TIMEOUT(driveReady(window), kDriveTimeoutMs);
+        window.connection().disconnectDrive();
+        QVERIFY(!window.connection().isConnected());
+        QVERIFY(labelText(window, "stateLabel").contains(QStringLiteral("Disconnected")));
+        QTest::keyClick(window.terminal(), Qt::Key_Return); // typing while disconnected says so, no crash
+        QVERIFY(window.terminal()->text().contains(QStringLiteral("[Not connected")));
+    }
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "main_window_test.moc"
