@@ -34,9 +34,6 @@ void Bds5Drive::powerUp() {
     m_mode = Bds5DriveMode::Interactive;
     m_received.clear();
     m_line.clear();
-    m_txFifo.clear();
-    m_txHead = 0;
-    m_txCredit = 0;
     chooseBaudRate();
     m_heldErrors.clear();
     m_time = Microseconds{0};
@@ -60,7 +57,7 @@ void Bds5Drive::powerUp() {
 
 void Bds5Drive::receive(std::string_view bytes) { m_received.append(bytes); }
 
-std::string Bds5Drive::takeTransmitted() { return std::exchange(m_transmitted, {}); }
+std::string Bds5Drive::takeTransmitted() { return m_uart.takeSent(); }
 
 void Bds5Drive::step(Microseconds dt) {
     m_time += dt;
@@ -69,7 +66,8 @@ void Bds5Drive::step(Microseconds dt) {
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
     if (m_executor.running()) runProgram();
-    driveUart(dt);
+    m_uart.advance(dt);
+    m_state.variables.set("SERIAL", m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)
 }
 
 void Bds5Drive::runProgram() {
@@ -182,7 +180,7 @@ void Bds5Drive::handleEscape() {
         }
         // The manual prints the leave-monitor answer as "<cr><lf>ENTER MONITOR MODE." (L9767-9768).
         transmit(messages ? "\r\nENTER MONITOR MODE." : "\r\n");
-        m_atLineStart = false;
+        
         m_promptPending = false;
         m_mode = Bds5DriveMode::Running;
         return;
@@ -330,6 +328,7 @@ void Bds5Drive::loadLine(std::string line) {
 
 void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
     transmit(reply.output);
+    if (const auto code = m_editor.takeError()) logError(m_state, *code); // ERR 86 / 110 go to ERR HIST
     if (reply.exited) {
         m_mode = Bds5DriveMode::Interactive;
         return sendPrompt();
@@ -361,7 +360,7 @@ void Bds5Drive::sendHeldErrors(std::string_view preamble) {
 }
 
 void Bds5Drive::sendPrompt() {
-    if (!m_atLineStart) transmit(kCrLf); // every prompt follows CR LF (L9609)
+    if (!m_uart.atLineStart()) transmit(kCrLf); // every prompt follows CR LF (L9609)
     const std::string_view prompt = m_mode == Bds5DriveMode::Monitor       ? kMonitorPrompt
                                     : m_mode == Bds5DriveMode::ProgramLoad ? kLoadPrompt
                                                                            : kInteractivePrompt;
@@ -369,43 +368,14 @@ void Bds5Drive::sendPrompt() {
     m_promptPending = true;
 }
 
-void Bds5Drive::transmit(std::string_view bytes) {
-    if (bytes.empty()) return;
-    m_txFifo.append(bytes);
-    m_atLineStart = bytes.back() == '\n';
-}
-
-// The UART sends at the BAUD rate, ten bits a character (8N1, L10118-10147); SERIAL is ON when idle.
-void Bds5Drive::driveUart(Microseconds dt) {
-    m_txCredit += double(dt.count()) * m_baud / 10.0 / 1e6;
-    const std::size_t waiting = m_txFifo.size() - m_txHead;
-    const std::size_t n = std::min(waiting, std::size_t(m_txCredit));
-    m_transmitted.append(m_txFifo, m_txHead, n);
-    m_txHead += n;
-    m_txCredit -= double(n);
-    if (m_txHead == m_txFifo.size()) { // idle line: no credit is banked for later
-        m_txFifo.clear();
-        m_txHead = 0;
-        m_txCredit = std::min(m_txCredit, 1.0);
-    } else if (m_txHead > 4096) {
-        m_txFifo.erase(0, m_txHead);
-        m_txHead = 0;
-    }
-    m_state.variables.set("SERIAL", transmitting() ? 0 : 1);
-}
+void Bds5Drive::transmit(std::string_view bytes) { m_uart.write(bytes); }
 
 // The rate is fixed at power-up from BAUD (ABAUD off, MOTION on); an invalid BAUD logs ERR 103 to the
 // history only (digest §2.2). Autobaud on CRs arrives with the serial issue.
 void Bds5Drive::chooseBaudRate() {
     const std::int32_t baud = m_state.variables.read("BAUD").value_or(9600);
-    for (const int valid : {300, 600, 1200, 2400, 4800, 9600, 19200}) {
-        if (baud == valid) {
-            m_baud = baud;
-            return;
-        }
-    }
-    logError(m_state, 103);
-    m_baud = 9600;
+    if (!Bds5Uart::validBaud(baud)) logError(m_state, 103);
+    m_uart.reset(Bds5Uart::validBaud(baud) ? baud : 9600);
 }
 
 bool Bds5Drive::switchOn(std::string_view name, bool fallback) const {

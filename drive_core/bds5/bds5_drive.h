@@ -6,6 +6,7 @@
 #include "bds5_executor.h"
 #include "bds5_interpreter.h"
 #include "bds5_resident_editor.h"
+#include "bds5_uart.h"
 #include "drive_core/drive.h"
 
 #include <array>
@@ -46,8 +47,8 @@ public:
     Bds5DriveMode mode() const { return m_mode; }
     bool promptPending() const { return m_promptPending; }
     // The UART still has bytes to send (they leave at the BAUD rate, 8N1: ten bits a character).
-    bool transmitting() const { return m_txHead < m_txFifo.size(); }
-    int baudRate() const { return m_baud; }
+    bool transmitting() const { return m_uart.busy(); }
+    int baudRate() const { return m_uart.baud(); }
     const Bds5State& state() const { return m_state; }
 
 private:
@@ -69,7 +70,6 @@ private:
     void transmit(std::string_view bytes);
     bool switchOn(std::string_view name, bool fallback) const;
     void tickTimers(Microseconds dt);
-    void driveUart(Microseconds dt);
     void chooseBaudRate();
 
     Bds5State m_state;
@@ -78,17 +78,12 @@ private:
     Bds5ResidentEditor m_editor{m_state.program};
     Bds5DriveMode m_mode = Bds5DriveMode::Interactive;
     std::string m_received;    // UART receive buffer, not yet processed
-    std::string m_txFifo;      // bytes the processor has written to the UART, from m_txHead on not yet sent
-    std::size_t m_txHead = 0;
-    double m_txCredit = 0;     // characters the line may carry now
-    int m_baud = 9600;
-    std::string m_transmitted; // bytes that have left the UART, not yet taken by the host side
+    Bds5Uart m_uart;
     std::string m_line;        // the instruction being typed
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
     bool m_breakPending = false; // the program stopped while the monitor prompt was up
     bool m_loadStarted = false;  // >BDS: the first line erases the program (L9957)
-    bool m_atLineStart = true;
     bool m_powered = false;
     Microseconds m_time{0};
     Microseconds m_timerRemainder{0};

@@ -258,6 +258,7 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::ask(Mode mode, const std::string& 
 // chosen: editor errors look like the drive's own after a command: CR LF LF, BEL, "ERR n 'entry'" and the
 // message at column 40 (L6036-6100, L9802-9806).
 Bds5ResidentEditor::Reply Bds5ResidentEditor::error(int code, const std::string& entry) {
+    m_error = code;
     return toCommand("\r\n\n\a" + formatError(Bds5Error{code, entry, 0}) + std::string(kCrLf));
 }
 

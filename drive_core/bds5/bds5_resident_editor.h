@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace drive_core::bds5 {
 
@@ -32,6 +33,8 @@ public:
 
     // The current line, 1..lineCount()+1 (lineCount()+1: after the last line, where I appends).
     int currentLine() const { return m_current; }
+    // The error code (86, 110) the last reply printed, once: for the drive's error history (ERR HIST).
+    std::optional<int> takeError() { return std::exchange(m_error, std::nullopt); }
 
 private:
     enum class Mode { Command, Insert, Find, ChangeWhat, ChangeTo, OldPassword, NewPassword };
@@ -75,6 +78,7 @@ private:
     std::optional<std::string> m_findText; // shared by F and C's CHANGE WHAT (L3626-3636)
     std::optional<std::string> m_changeTo; // C's CHANGE TO WHAT default
     std::string m_changeWhat;              // the CHANGE WHAT answer while CHANGE TO WHAT is asked
+    std::optional<int> m_error;            // see takeError()
 };
 
 } // namespace drive_core::bds5

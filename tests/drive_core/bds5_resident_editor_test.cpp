@@ -268,3 +268,17 @@ TEST_F(Bds5Editor, RoundTripEditListAndRun) {
     EXPECT_EQ(enter("<BDS"), "<BDS\r\n10$ ;GREETING\r\nP \"HELLO WORLD\"\r\nB\r\n-->");
     EXPECT_EQ(type("RUN 10\r", 20ms), "RUN 10\r\nHELLO WORLD\r\n-->");
 }
+
+TEST_F(Bds5Editor, RefusedChangeReportsItsErrorCodeForTheHistoryOnce) {
+    drive_core::bds5::Bds5Program program;
+    program.setPassword("KEY");
+    drive_core::bds5::Bds5ResidentEditor editor(program);
+    EXPECT_EQ(editor.enter().output, "e->");
+    EXPECT_EQ(editor.line("P").output, "BAD ENTRY\r\ne->");
+    EXPECT_EQ(editor.takeError(), std::nullopt);
+    EXPECT_FALSE(editor.line("I").exited);
+    EXPECT_EQ(editor.takeError(), 110);
+    EXPECT_EQ(editor.takeError(), std::nullopt);
+    EXPECT_EQ(editor.prompt(), "e->");
+    EXPECT_TRUE(editor.escape().exited);
+}

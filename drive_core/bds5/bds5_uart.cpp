@@ -1,0 +1,47 @@
+// BDS5 transmitter timing.
+#include "bds5_uart.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace drive_core::bds5 {
+
+bool Bds5Uart::validBaud(int baud) {
+    for (const int valid : {300, 600, 1200, 2400, 4800, 9600, 19200})
+        if (baud == valid) return true;
+    return false;
+}
+
+void Bds5Uart::reset(int baud) {
+    m_fifo.clear();
+    m_head = 0;
+    m_credit = 0;
+    m_baud = baud;
+    m_atLineStart = true;
+}
+
+void Bds5Uart::write(std::string_view bytes) {
+    if (bytes.empty()) return;
+    m_fifo.append(bytes);
+    m_atLineStart = bytes.back() == '\n';
+}
+
+void Bds5Uart::advance(Microseconds dt) {
+    m_credit += double(dt.count()) * m_baud / 10.0 / 1e6;
+    const std::size_t n = std::min(m_fifo.size() - m_head, std::size_t(m_credit));
+    m_sent.append(m_fifo, m_head, n);
+    m_head += n;
+    m_credit -= double(n);
+    if (m_head == m_fifo.size()) { // an idle line banks no credit for later
+        m_fifo.clear();
+        m_head = 0;
+        m_credit = std::min(m_credit, 1.0);
+    } else if (m_head > 4096) {
+        m_fifo.erase(0, m_head);
+        m_head = 0;
+    }
+}
+
+std::string Bds5Uart::takeSent() { return std::exchange(m_sent, {}); }
+
+} // namespace drive_core::bds5

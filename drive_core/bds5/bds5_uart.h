@@ -1,0 +1,37 @@
+// The BDS5's serial transmitter: what the processor writes leaves at the BAUD rate, ten bits a
+// character (8N1, L10118-10147). Knows whether it is busy (the SERIAL switch, print idling).
+#pragma once
+
+#include "drive_core/drive.h"
+
+#include <string>
+#include <string_view>
+
+namespace drive_core::bds5 {
+
+class Bds5Uart {
+public:
+    // Valid rates (L7562, digest §2.1); anything else is not a BAUD the drive can use.
+    static bool validBaud(int baud);
+
+    void reset(int baud);
+    void write(std::string_view bytes);
+    // Lets dt of line time pass: moves what the line carried in that time to the sent buffer.
+    void advance(Microseconds dt);
+    // Returns and clears what has left the drive.
+    std::string takeSent();
+
+    bool busy() const { return m_head < m_fifo.size(); }
+    bool atLineStart() const { return m_atLineStart; }
+    int baud() const { return m_baud; }
+
+private:
+    std::string m_fifo; // written, from m_head on not yet sent
+    std::size_t m_head = 0;
+    std::string m_sent;
+    double m_credit = 0; // characters the line may carry now
+    int m_baud = 9600;
+    bool m_atLineStart = true;
+};
+
+} // namespace drive_core::bds5
