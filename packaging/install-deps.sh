@@ -9,7 +9,7 @@ build_deps=(
   libeigen3-dev libgl-dev qt6-qpa-plugins fonts-dejavu-core
 )
 test_deps=(
-  libgtest-dev libgmock-dev xvfb xauth python3 python3-serial socat picocom
+  libgtest-dev libgmock-dev xvfb xauth python3 python3-serial socat picocom clang libclang-rt-14-dev
 )
 
 wanted=("${build_deps[@]}")

@@ -24,7 +24,9 @@ constexpr std::string_view kLoadPrompt = "l->";
 constexpr std::string_view kErrorPreamble = "\r\n\n";
 } // namespace
 
-Bds5Drive::Bds5Drive() = default;
+Bds5Drive::Bds5Drive() {
+    m_executor.setLineHook([this](TaskLevel level, int line, std::string& out) { return beforeLine(level, line, out); });
+}
 
 void Bds5Drive::powerUp() {
     m_state.variables.powerUp();
@@ -70,18 +72,6 @@ void Bds5Drive::step(Microseconds dt) {
     m_state.variables.set("SERIAL", m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)
 }
 
-void Bds5Drive::runProgram() {
-    m_state.serialBusy = transmitting(); // a print waits for the previous one to leave (L4637)
-    std::string out;
-    std::optional<Bds5Error> error;
-    const ProgramStop stop = m_executor.advance(m_time, out, error);
-    if (m_mode == Bds5DriveMode::Running) transmit(out); // program prints are suppressed in monitor mode
-    if (error && stop == ProgramStop::Running) { // a warning: message only, the program goes on
-        if (m_promptPending) m_heldErrors.push_back(*error);
-        else sendError(*error, kErrorPreamble);
-    }
-    if (stop != ProgramStop::Running) programStopped(stop, error);
-}
 
 // TMR1-TMR4 count down every millisecond and stop at 0 (L5775-5800).
 void Bds5Drive::tickTimers(Microseconds dt) {
@@ -124,8 +114,9 @@ void Bds5Drive::handleByte(char c) {
     if (c == kCtrlX) return handleBreakCharacter();
     if (c == kEscape) return handleEscape();
     if (c == kCtrlV) return m_executor.fireVariableTask(); // the VARIABLE$ task (L4818)
-    // Run mode has no prompt: the drive takes no input but its attention characters (L1254).
-    if (m_mode == Bds5DriveMode::Running) return;
+    // Run mode has no prompt: the drive takes no input but its attention characters, unless an INPUT
+    // waits for an answer (L1254).
+    if (m_mode == Bds5DriveMode::Running && !m_state.pendingInput) return;
     const bool echo = switchOn("ECHO", true);
     switch (c) {
     case '\r':
@@ -163,7 +154,12 @@ void Bds5Drive::handleEscape() {
         sendHeldErrors("");
         sendPrompt();
         return;
+    case Bds5DriveMode::SingleStep: // Esc twice leaves single-step: SS off, monitor, then run (L5682)
+        m_state.variables.set("SS", 0);
+        m_stepGranted = true; // the line shown runs when the program goes on
+        [[fallthrough]];
     case Bds5DriveMode::Running:
+        if (switchOn("TRC", false)) m_state.variables.set("TRC", 0); // Esc in trace: monitor, TRC off
         transmit(messages ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "\r\n"); // L9757-9776
         m_mode = Bds5DriveMode::Monitor;
         sendPrompt();
@@ -183,6 +179,7 @@ void Bds5Drive::handleEscape() {
         
         m_promptPending = false;
         m_mode = Bds5DriveMode::Running;
+        m_executor.resume(m_time);
         return;
     case Bds5DriveMode::ProgramLoad:
         transmit(kCrLf);
@@ -196,7 +193,8 @@ void Bds5Drive::handleEscape() {
 // ^X: STOP + BREAK from any mode, even while a program runs (L2233-2235, L9868).
 void Bds5Drive::handleBreakCharacter() {
     m_line.clear();
-    if (m_mode == Bds5DriveMode::Running || m_mode == Bds5DriveMode::Monitor) {
+    if (m_mode == Bds5DriveMode::Running || m_mode == Bds5DriveMode::Monitor ||
+        m_mode == Bds5DriveMode::SingleStep) {
         m_executor.stop();
         m_mode = Bds5DriveMode::Interactive;
         m_breakPending = false;
@@ -210,6 +208,7 @@ void Bds5Drive::endOfLine() {
     m_promptPending = false;
     if (m_mode == Bds5DriveMode::ProgramLoad) return loadLine(std::move(line));
     if (m_mode == Bds5DriveMode::Editor) return editorReply(m_editor.line(line));
+    if (m_mode == Bds5DriveMode::Running) return inputLine(line);
     if (!m_heldErrors.empty() || m_breakPending) {
         // A command typed while an error waits is ignored (L9721-9739, L9921-9935).
         const bool typed = line.find_first_not_of(" \t") != std::string::npos;
@@ -222,7 +221,7 @@ void Bds5Drive::endOfLine() {
         sendPrompt();
         return;
     }
-    if (m_mode == Bds5DriveMode::Monitor) return monitorLine(line);
+    if (m_mode == Bds5DriveMode::Monitor || m_mode == Bds5DriveMode::SingleStep) return monitorLine(line);
     interactiveLine(line);
 }
 
@@ -274,44 +273,7 @@ void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
     }
 }
 
-void Bds5Drive::runProgram(int label) {
-    // RUN checks the program before it starts (L3746): labels used twice, labels after ERROR$.
-    if (const auto problem = m_state.program.check()) {
-        logError(m_state, problem->code);
-        sendError(*problem, kErrorPreamble);
-        return sendPrompt();
-    }
-    std::optional<int> line; // RUN alone enables multitasking without a main routine (L4595-4601)
-    if (label >= 0) {
-        line = m_state.program.labelLine(label);
-        if (!line) {
-            logError(m_state, 70);
-            sendError(Bds5Error{70, std::to_string(label), 0}, kErrorPreamble);
-            return sendPrompt();
-        }
-    }
-    m_executor.start(line, m_time);
-    m_mode = Bds5DriveMode::Running; // no prompt while the program runs
-}
 
-void Bds5Drive::monitorLine(const std::string& line) {
-    auto lexed = lexLine(line);
-    std::string out;
-    Outcome outcome;
-    if (auto* e = std::get_if<Bds5Error>(&lexed)) outcome.error = *e;
-    else outcome = m_interpreter.execute(std::get<LexedLine>(lexed).entries, ExecContext{Origin::Monitor, 0}, out);
-    transmit(out);
-    if (outcome.error) {
-        logError(m_state, outcome.error->code);
-        sendError(*outcome.error, kErrorPreamble);
-    }
-    // S, B and K typed in monitor mode break the program: back to interactive (L9778-9797).
-    if (outcome.flow == Flow::Break || outcome.flow == Flow::Stop || outcome.flow == Flow::Kill) {
-        m_executor.stop();
-        m_mode = Bds5DriveMode::Interactive;
-    }
-    sendPrompt();
-}
 
 void Bds5Drive::loadLine(std::string line) {
     if (!m_loadStarted) { // program memory is erased on the first CR-terminated line (L9957)
@@ -336,18 +298,6 @@ void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
     m_promptPending = true;
 }
 
-void Bds5Drive::programStopped(ProgramStop stop, const std::optional<Bds5Error>& error) {
-    m_executor.stop();
-    if (stop == ProgramStop::Kill) m_state.enabled = false;
-    if (m_mode == Bds5DriveMode::Monitor) { // the monitor prompt is up: news waits for the next CR
-        if (error) m_heldErrors.push_back(*error);
-        m_breakPending = true;
-        return;
-    }
-    if (error) sendError(*error, kErrorPreamble);
-    m_mode = Bds5DriveMode::Interactive;
-    sendPrompt();
-}
 
 void Bds5Drive::sendError(const Bds5Error& error, std::string_view preamble) {
     transmit(preamble);
@@ -361,9 +311,10 @@ void Bds5Drive::sendHeldErrors(std::string_view preamble) {
 
 void Bds5Drive::sendPrompt() {
     if (!m_uart.atLineStart()) transmit(kCrLf); // every prompt follows CR LF (L9609)
-    const std::string_view prompt = m_mode == Bds5DriveMode::Monitor       ? kMonitorPrompt
-                                    : m_mode == Bds5DriveMode::ProgramLoad ? kLoadPrompt
-                                                                           : kInteractivePrompt;
+    const std::string prompt = m_mode == Bds5DriveMode::Monitor       ? std::string(kMonitorPrompt)
+                               : m_mode == Bds5DriveMode::ProgramLoad ? std::string(kLoadPrompt)
+                               : m_mode == Bds5DriveMode::SingleStep  ? currentStepPrompt()
+                                                                      : std::string(kInteractivePrompt);
     if (switchOn("PROMPT", true)) transmit(prompt); // PROMPT OFF suppresses it (L1550, L5320-5326)
     m_promptPending = true;
 }

@@ -19,7 +19,7 @@ namespace drive_core::bds5 {
 // simulator follows (v3.0.0) and that it is a simulation, so no user mistakes it for hardware.
 inline constexpr std::string_view kSignOn = "BDS5 DIGITAL SERVO DRIVE  V3.0.0  (SERVODESK SIMULATION)";
 
-enum class Bds5DriveMode { Interactive, Running, Monitor, ProgramLoad, Editor };
+enum class Bds5DriveMode { Interactive, Running, Monitor, SingleStep, ProgramLoad, Editor };
 
 class Bds5Drive final : public Drive {
 public:
@@ -58,6 +58,9 @@ private:
     void endOfLine();
     void interactiveLine(const std::string& line);
     void monitorLine(const std::string& line);
+    void inputLine(const std::string& line);
+    bool beforeLine(TaskLevel level, int line, std::string& out);
+    std::string currentStepPrompt() const;
     void loadLine(std::string line);
     void editorReply(const Bds5ResidentEditor::Reply& reply);
     void applyTerminalFlow(const Outcome& outcome);
@@ -83,6 +86,7 @@ private:
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
     bool m_breakPending = false; // the program stopped while the monitor prompt was up
+    bool m_stepGranted = false; // single-step: Enter lets the shown line run
     bool m_loadStarted = false;  // >BDS: the first line erases the program (L9957)
     bool m_powered = false;
     Microseconds m_time{0};

@@ -3,7 +3,9 @@
 
 #include "drive_core/catalog/bds5_catalog.h"
 
+#include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace drive_core::bds5 {
 
@@ -54,7 +56,15 @@ void Bds5Executor::stop() {
     for (Task& t : m_tasks) t = Task{};
     m_alarmLast.fill(std::nullopt);
     m_multitasking = false;
+    m_errorHandling = false;
+    m_paused = false;
     m_current.reset();
+    m_state.pendingInput.reset();
+}
+
+void Bds5Executor::resume(Microseconds now) {
+    m_paused = false;
+    m_cpu = std::max(m_cpu, now);
 }
 
 void Bds5Executor::launch(TaskLevel level, int line) {
@@ -98,7 +108,8 @@ void Bds5Executor::pollAlarms(bool atEnable) {
 
 bool Bds5Executor::idle(const Task& t) const {
     if (!t.active) return true;
-    if (t.waitPrinter && m_state.serialBusy) return true;
+    if (t.waitPrinter && printerBlocked()) return true;
+    if (t.waitInput && m_state.pendingInput) return true;
     if (t.wakeAt > m_cpu) return true;
     if (t.hold) {
         const auto v = m_state.variables.read(*t.hold);
@@ -116,8 +127,8 @@ std::optional<Microseconds> Bds5Executor::nextWake() const {
 
 ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optional<Bds5Error>& error) {
     if (!m_multitasking) return ProgramStop::Break;
-    for (int n = 0; m_multitasking && m_cpu < now && n < kMaxLinesPerAdvance; ++n) {
-        pollAlarms(false);
+    for (int n = 0; m_multitasking && !m_paused && m_cpu < now && n < kMaxLinesPerAdvance; ++n) {
+        if (!m_errorHandling) pollAlarms(false);
         // MULTI OFF disables alarm C, variable input and background (not A/B) (L4569-4577).
         const bool multi = m_state.variables.read("MULTI").value_or(1) != 0;
         std::optional<TaskLevel> pick;
@@ -128,7 +139,7 @@ ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optio
                 continue;
             if (!idle(m_tasks[i])) pick = level;
         }
-        if (!pick && multi && !task(TaskLevel::Background).active) { // background restarts whenever all idle
+        if (!pick && multi && !m_errorHandling && !task(TaskLevel::Background).active) { // background restarts whenever all idle
             if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::Background)) {
                 launch(TaskLevel::Background, *line + 1);
                 pick = TaskLevel::Background;
@@ -146,7 +157,7 @@ ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optio
             return stop;
         }
     }
-    if (m_cpu < now && m_multitasking) m_cpu = now; // bounded work per call: never fall behind forever
+    if (m_cpu < now && m_multitasking && !m_paused) m_cpu = now; // bounded work a call: never fall behind
     return ProgramStop::Running;
 }
 
@@ -157,12 +168,21 @@ ProgramStop Bds5Executor::fail(Bds5Error e, std::optional<Bds5Error>& out) {
     // Severity 1 is a message only; 2 and above break the program (Table D.1). 53 "breaks program
     // execution" despite its level (L7295).
     if (info && info->severity <= catalog::bds5::Severity::Warning && out->code != 53) return ProgramStop::Running;
-    return ProgramStop::Error;
+    // A breaking error runs ERROR$ if there is one, with every other task suspended (L1292, L4956-4958);
+    // an error inside ERROR$ itself breaks for good.
+    const auto handler = m_state.program.dedicatedLine(DedicatedLabel::Error);
+    if (!handler || m_errorHandling) return ProgramStop::Error;
+    for (Task& t : m_tasks) t = Task{};
+    m_errorHandling = true;
+    m_state.pendingInput.reset();
+    launch(TaskLevel::Main, *handler);
+    return ProgramStop::Running;
 }
 
 // END stops this task only; with no dedicated tasks in the program END is B (L4579-4601).
 ProgramStop Bds5Executor::endTask(TaskLevel level) {
     task(level).active = false;
+    if (std::exchange(m_errorHandling, false)) return ProgramStop::Running; // END in ERROR$: dormant again
     if (level == TaskLevel::Main && !hasDedicatedTasks()) return ProgramStop::Break;
     return ProgramStop::Running;
 }
@@ -174,11 +194,19 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
     const int line = t.pc;
     const LexedLine& lexed = program.lexed(line);
     if (printsText(lexed)) {
-        // A printing command idles before it runs until the previous print has left (L4637).
-        t.waitPrinter = m_state.serialBusy;
+        // A printing command idles before it runs until the previous print has left (L4637), and while
+        // any task's INPUT waits for the operator (L4797-4814).
+        t.waitPrinter = printerBlocked();
         if (t.waitPrinter) return ProgramStop::Running;
-        m_state.serialBusy = true;
     }
+    t.waitInput = false;
+    if (m_hook && !m_hook(level, line, out)) {
+        m_paused = true; // single-step: this line waits for the operator's Enter
+        return ProgramStop::Running;
+    }
+    if (printsText(lexed)) m_state.serialBusy = true;
+    if (m_errorHandling && !lexed.entries.empty() && lexed.entries.front().text == "EN")
+        return fail(Bds5Error{55, "EN", line}, error); // NOT FROM RECOVERY (L7301)
     m_cpu += costOf(lexed); // lines follow one another without gaps: simulated time is exact
     ++t.pc;
     t.hold.reset();
@@ -209,6 +237,7 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
     case Flow::Next: return ProgramStop::Running;
     case Flow::Goto:
     case Flow::Gosub: {
+        if (m_errorHandling) return fail(Bds5Error{55, lexed.entries[0].text, line}, error);
         if (!subroutinesAllowed) return fail(Bds5Error{63, lexed.entries[0].text, line}, error);
         const auto target = program.labelLine(o.target);
         if (!target) return fail(Bds5Error{70, std::to_string(o.target), line}, error);
@@ -229,6 +258,10 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
         return ProgramStop::Running;
     case Flow::Repeat: t.pc = line; return ProgramStop::Running;
     case Flow::Dwell: t.wakeAt = m_cpu + std::chrono::milliseconds(o.target); return ProgramStop::Running;
+    case Flow::Input:
+        t.waitInput = true;
+        m_state.pendingInput = o.input;
+        return ProgramStop::Running;
     case Flow::Hold:
         t.hold = o.text;
         t.holdOn = o.condition;

@@ -9,6 +9,7 @@
 #include "drive_core/drive.h"
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,14 @@ public:
     // The level whose line runs next (for task prompts in single-step and trace, Table 5.1).
     std::optional<TaskLevel> currentTask() const { return m_current; }
 
+    // Called before each line runs, with the output buffer (for trace lines in order with prints).
+    // Returning false pauses the program before that line (single-step) until resume().
+    using LineHook = std::function<bool(TaskLevel level, int line, std::string& out)>;
+    void setLineHook(LineHook hook) { m_hook = std::move(hook); }
+    bool paused() const { return m_paused; }
+    // Continues after a pause; the processor does not catch up the time it spent paused.
+    void resume(Microseconds now);
+
     // Executes every line whose time has come by `now`. Output goes to out; an error is returned through
     // error (already logged; a warning leaves the program running).
     ProgramStop advance(Microseconds now, std::string& out, std::optional<Bds5Error>& error);
@@ -65,6 +74,7 @@ private:
         std::optional<std::string> hold;  // H: idle until this switch ...
         bool holdOn = true;               // ... is in this state
         bool waitPrinter = false;         // a print waits for the serial port (pre-execution idle)
+        bool waitInput = false;           // INPUT: idle until the operator answers
     };
 
     Task& task(TaskLevel level) { return m_tasks[std::size_t(level)]; }
@@ -76,6 +86,7 @@ private:
     ProgramStop executeLine(TaskLevel level, std::string& out, std::optional<Bds5Error>& error);
     ProgramStop endTask(TaskLevel level);
     ProgramStop fail(Bds5Error error, std::optional<Bds5Error>& out);
+    bool printerBlocked() const { return m_state.serialBusy || m_state.pendingInput.has_value(); }
     ProgramStop applyIf(Task& t, int line, const Outcome& o, std::string& out, std::optional<Bds5Error>& error);
     // From an IF/ELIF line, the next ELIF/ELSE/ENDIF of the same block (or its ENDIF when toEndif).
     std::optional<int> findBlockEnd(int from, bool toEndif) const;
@@ -85,6 +96,9 @@ private:
     std::array<Task, kTaskCount> m_tasks;
     std::array<std::optional<bool>, 3> m_alarmLast; // last sampled state of each alarm's switch
     bool m_multitasking = false;
+    bool m_errorHandling = false; // ERROR$ runs: every other task is suspended (L4956-4958)
+    bool m_paused = false;
+    LineHook m_hook;
     Microseconds m_cpu{0}; // the processor has executed everything up to this time
     std::optional<TaskLevel> m_current;
 };

@@ -5,6 +5,9 @@
 #include "bds5_printer.h"
 #include "drive_core/catalog/bds5_catalog.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace drive_core::bds5 {
 
 namespace cat = catalog::bds5;
@@ -113,8 +116,11 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         if (!state || (*state != 0 && *state != 1)) return {Bds5Error{83, args[1].text, 0}};
         return {std::nullopt, Flow::Hold, 0, *state == 1, args[0].text};
     }
-    if (word == "P" || word == "PS") return {print(entries, true, out)};
-    if (word == "PA" || word == "PAS") return {print(entries, false, out)};
+    // P/PS end with CR LF, R/RS with CR only (refresh a line), v3 PA/PAS with nothing (L4191-4378, L9305).
+    if (word == "P" || word == "PS") return {print(entries, "\r\n", word == "PS", out)};
+    if (word == "R" || word == "RS") return {print(entries, "\r", word == "RS", out)};
+    if (word == "PA" || word == "PAS") return {print(entries, "", word == "PAS", out)};
+    if (word == "INPUT") return input(entries, out);
     if (word == "ERR") return {errCommand(entries, out)};
     if (word == "EN" || word == "DIS") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
@@ -209,9 +215,18 @@ std::optional<bool> Bds5Interpreter::condition(std::span<const Entry> entries,
     return a.value != b.value;
 }
 
+// The status word of PS/RS/PAS (Table 4.4 L4347-4356). Its place is not in the seed; chosen: after one
+// space. Motion states (JOG, PROFILE, GEAR, CAMMING) arrive with the motion engine.
+std::string Bds5Interpreter::statusWord() const {
+    if (m_state.variables.read("FAULT").value_or(0)) return "FAULT";
+    if (!m_state.enabled) return "OFF";
+    return m_state.variables.read("REMOTE").value_or(1) ? "ACTIVE" : "READY";
+}
+
 // P item item ... — texts verbatim, expressions formatted, no separators added (L4191-4358).
-std::optional<Bds5Error> Bds5Interpreter::print(std::span<const Entry> entries, bool terminate, std::string& out) {
-    if (entries.size() < 2) return Bds5Error{82, entries.front().text, 0};
+std::optional<Bds5Error> Bds5Interpreter::print(std::span<const Entry> entries, std::string_view terminator,
+                                                bool status, std::string& out) {
+    if (entries.size() < 2 && !status) return Bds5Error{82, entries.front().text, 0};
     std::string text;
     for (const Entry& item : entries.subspan(1)) {
         if (item.quoted) {
@@ -226,9 +241,47 @@ std::optional<Bds5Error> Bds5Interpreter::print(std::span<const Entry> entries, 
         if (!formatted) return Bds5Error{79, item.text, 0};
         text += *formatted;
     }
+    if (status) text += (text.empty() ? "" : " ") + statusWord();
     out += text;
-    if (terminate) out += "\r\n";
+    out += terminator;
     return std::nullopt;
+}
+
+// INPUT "text" VAR[d] [min max] — program only; limits both or neither, clipped to the variable's own;
+// [d] scales the typed number by 10^d; [.d] is ERR 79 (L4380-4436, L6785-6802).
+Outcome Bds5Interpreter::input(std::span<const Entry> entries, std::string& out) {
+    if (entries.size() != 3 && entries.size() != 5) return {Bds5Error{82, joined(entries), 0}};
+    if (!entries[1].quoted) return {Bds5Error{83, entries[1].text, 0}};
+    InputRequest request;
+    std::string target = entries[2].text;
+    if (const auto open = target.find('['); open != std::string::npos) {
+        const std::string digits = target.substr(open + 1, target.size() - open - 2);
+        if (target.back() != ']' || digits.empty() || digits.size() > 1 || !std::isdigit((unsigned char)digits[0]))
+            return {Bds5Error{79, target, 0}};
+        request.decimals = digits[0] - '0';
+        target.resize(open);
+    }
+    const auto ref = cat::findVariable(target);
+    if (!ref) return {Bds5Error{80, target, 0}};
+    if (ref->info->write == cat::WriteCondition::Never) return {Bds5Error{81, target, 0}};
+    if (ref->info->write == cat::WriteCondition::Factory) return {Bds5Error{111, target, 0}};
+    request.variable = target;
+    request.minimum = cat::minimumOf(*ref->info);
+    request.maximum = cat::maximumOf(*ref->info);
+    if (entries.size() == 5) {
+        const auto reader = [this](auto n) { return readValue(n); };
+        const ExpressionResult lo = evaluate(entries[3].text, reader);
+        if (lo.error) return {Bds5Error{lo.error, entries[3].text, 0}};
+        const ExpressionResult hi = evaluate(entries[4].text, reader);
+        if (hi.error) return {Bds5Error{hi.error, entries[4].text, 0}};
+        request.minimum = std::max<std::int64_t>(request.minimum, lo.value);
+        request.maximum = std::min<std::int64_t>(request.maximum, hi.value);
+    }
+    request.text = expandControlCharacters(std::string_view(entries[1].text).substr(1, entries[1].text.size() - 2));
+    out += request.text;
+    Outcome o{std::nullopt, Flow::Input};
+    o.input = std::move(request);
+    return o;
 }
 
 // assignment := VAR '=' expr | VAR expr | VAR '=' expr (with blanks around '=')

@@ -15,6 +15,15 @@
 
 namespace drive_core::bds5 {
 
+// INPUT "text" VAR[d] [min max] (L4380-4436): what the drive waits for.
+struct InputRequest {
+    std::string variable;     // "X2"
+    int decimals = 0;         // the typed value is multiplied by 10^decimals
+    std::int64_t minimum = 0; // limits after scaling, already clipped to the variable's own limits
+    std::int64_t maximum = 0;
+    std::string text;         // the prompt text as printed (control characters expanded)
+};
+
 // State the interpreter reads and changes; owned by Bds5Drive.
 struct Bds5State {
     Bds5VariableStore variables;
@@ -22,6 +31,7 @@ struct Bds5State {
     std::deque<int> errorHistory; // ERR HIST, newest first, at most 20 entries (L6110-6148)
     bool enabled = false;         // drive enabled (EN) / inhibited (DIS, K)
     bool serialBusy = false;      // the UART is still sending: printing commands idle before running
+    std::optional<InputRequest> pendingInput; // an INPUT waits: every print idles (L4797-4814)
 };
 
 constexpr std::size_t kErrorHistorySize = 20;
@@ -54,6 +64,7 @@ enum class Flow {
     Load,     // >BDS [password]: text = password
     List,     // <BDS
     Edit,     // ED: enter the resident editor
+    Input,    // INPUT: the program waits for the operator (Outcome::input)
     If,       // IF c: condition
     Elif,     // ELIF c: condition
     Else,
@@ -66,6 +77,7 @@ struct Outcome {
     int target = 0;
     bool condition = false;
     std::string text;
+    std::optional<InputRequest> input;
 };
 
 class Bds5Interpreter {
@@ -80,7 +92,10 @@ private:
     Outcome quickIf(std::span<const Entry> entries, const ExecContext& context, std::string& out);
     Outcome til(std::span<const Entry> entries, const ExecContext& context, std::string& out);
     Outcome jump(Flow flow, std::span<const Entry> entries);
-    std::optional<Bds5Error> print(std::span<const Entry> entries, bool terminate, std::string& out);
+    std::optional<Bds5Error> print(std::span<const Entry> entries, std::string_view terminator, bool status,
+                                   std::string& out);
+    Outcome input(std::span<const Entry> entries, std::string& out);
+    std::string statusWord() const;
     std::optional<Bds5Error> assign(std::span<const Entry> entries);
     std::optional<Bds5Error> errCommand(std::span<const Entry> entries, std::string& out);
     // cond := expr ('GT'|'GE'|'LT'|'LE'|'EQ'|'NE') expr — three entries starting at entries[0].
