@@ -7,6 +7,7 @@ namespace {
 constexpr int kTailKeep = 256;
 constexpr int kBaseTimeoutMs = 3000; // the slowest interactive commands (EN) take "a few seconds"
 constexpr int kWakeAfterMs = 600;    // no prompt this long after opening: send a CR to ask for one
+constexpr int kRunDetectMs = 1500;   // no prompt this long after a typed line: run mode (EN takes seconds)
 const QString kIgnored = QStringLiteral("ERROR MSG WAITING--COMMAND IGNORED");
 } // namespace
 
@@ -20,6 +21,14 @@ Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(
     connect(&m_link, &Link::bytesReceived, this, &Bds5Session::onBytes);
     connect(&m_link, &Link::opened, this, &Bds5Session::onLinkOpened);
     connect(&m_link, &Link::closed, this, &Bds5Session::onLinkClosed);
+    m_runDetect.setSingleShot(true);
+    m_runDetect.setInterval(kRunDetectMs);
+    connect(&m_runDetect, &QTimer::timeout, this, [this] {
+        if (m_state != State::WaitingForPrompt || m_mode == Bds5Mode::Running) return;
+        m_mode = Bds5Mode::Running;
+        m_prompt.clear();
+        emit modeChanged(m_mode, m_prompt);
+    });
     connect(&m_silence, &QTimer::timeout, this, &Bds5Session::onPromptConfirmed);
     connect(&m_timeout, &QTimer::timeout, this, &Bds5Session::onTimeout);
     connect(&m_wake, &QTimer::timeout, this, [this] {
@@ -44,7 +53,12 @@ void Bds5Session::sendRaw(const QByteArray& bytes) {
         if (c == '\r' || c == '\x1b' || c == '\x18') m_rawLineOpen = false;
         else if (c >= ' ') m_rawLineOpen = true;
     }
-    if (bytes.contains('\r') || bytes.contains('\x1b')) setState(State::WaitingForPrompt);
+    if (bytes.contains('\r') || bytes.contains('\x1b')) {
+        setState(State::WaitingForPrompt);
+        // No prompt soon after a line the user typed: the drive runs a program (run mode has no prompt).
+        // Nothing is sent to ask: a CR could answer a program's INPUT.
+        m_runDetect.start();
+    }
     m_link.write(bytes);
 }
 
@@ -85,6 +99,7 @@ void Bds5Session::onPromptConfirmed() {
     const auto prompt = trailingPrompt(m_tail);
     if (!prompt) return;
     m_wake.stop();
+    m_runDetect.stop();
     if (*prompt != m_prompt || modeOfPrompt(*prompt) != m_mode) {
         m_prompt = *prompt;
         m_mode = modeOfPrompt(*prompt);

@@ -1,6 +1,7 @@
 // Bds5Session: talks to one BDS5 over any Link. An asynchronous state machine: it sends a queued command
 // only at a prompt, collects the response up to the next prompt, and reports typed results and ERR lines.
-// GUI thread; never blocks and never spins a nested event loop.
+// GUI thread; never blocks and never spins a nested event loop. The session keeps a reference to its
+// link: whoever owns both destroys the session first.
 #pragma once
 
 #include "bds5_protocol.h"
@@ -12,6 +13,8 @@
 #include <QTimer>
 
 #include <deque>
+#include <optional>
+#include <utility>
 
 namespace serialport {
 
@@ -80,6 +83,7 @@ private:
     QTimer m_silence;
     QTimer m_timeout;
     QTimer m_wake;
+    QTimer m_runDetect;
 };
 
 } // namespace serialport

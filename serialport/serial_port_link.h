@@ -5,6 +5,8 @@
 
 #include <QSerialPort>
 
+#include <algorithm>
+
 namespace serialport {
 
 class SerialPortLink final : public Link {
@@ -20,6 +22,8 @@ public:
     void write(const QByteArray& bytes) override;
     QString description() const override;
     int baudRate() const override { return m_baudRate; }
+    // Three characters' time at the baud rate, and never under the 16 ms a USB adapter may hold bytes.
+    int quietMs() const override { return std::max(20, 30 * 1000 / std::max(m_baudRate, 1)); }
 
 private:
     void onError(QSerialPort::SerialPortError error);

@@ -33,6 +33,8 @@ using drive_core::bds5::Bds5Drive;
 using namespace std::chrono_literals;
 
 constexpr std::size_t kMaxFlood = std::size_t(1) << 20;
+// BDS5_FUZZ_TRACE=1 copies what the drive sends to stderr, to read a reproducer's session.
+const bool kTrace = std::getenv("BDS5_FUZZ_TRACE") != nullptr;
 
 [[noreturn]] void fail(const char* what, long long a = 0, long long b = 0) {
     std::fprintf(stderr, "bds5_drive_fuzz: invariant violated: %s (%lld, %lld)\n", what, a, b);
@@ -56,6 +58,7 @@ public:
         const double carried = double(dt.count()) * m_drive.baudRate() / 10.0 / 1e6;
         if (double(out.size()) > carried + 2.0) fail("output faster than the baud rate", (long long)out.size(), dt.count());
         m_sent += out.size();
+        if (kTrace) std::fwrite(out.data(), 1, out.size(), stderr);
         checkState();
     }
 

@@ -82,6 +82,19 @@ private slots:
         QCOMPARE(f.raw, QByteArray("P 6*7\r\n          42\r\n-->"));
     }
 
+    void runModeShowsWhenNoPromptComes() {
+        Fixture f;
+        QSignalSpy finished(&f.session, &Bds5Session::finished);
+        for (const char* line : {">BDS", "1$", "D 100000", "\x1b"}) f.session.sendRaw(QByteArray(line) + (line[0] == '\x1b' ? "" : "\r"));
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        f.session.sendRaw("RUN 1\r");
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Running, 5000);
+        f.raw.clear();
+        f.session.sendRaw("\x1b"); // Esc: monitor mode
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Monitor, 5000);
+        QVERIFY(f.raw.contains("ENTER MONITOR MODE. PUSH ESCAPE TO EXIT"));
+    }
+
     void closingTheLinkFailsTheCommandInFlight() {
         Fixture f;
         QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
