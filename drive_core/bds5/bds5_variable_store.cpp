@@ -2,6 +2,7 @@
 #include "bds5_variable_store.h"
 
 #include <string>
+#include <utility>
 
 namespace drive_core::bds5 {
 
@@ -36,10 +37,53 @@ std::size_t Bds5VariableStore::slot(const cat::VariableRef& ref) const {
     return m_firstSlot[position] + offset;
 }
 
+namespace {
+// The NUM/DEN pair of each unit class (Tables 4.11-4.16).
+std::optional<std::pair<const char*, const char*>> unitPair(cat::UnitClass unit) {
+    switch (unit) {
+    case cat::UnitClass::Position: return std::pair{"PNUM", "PDEN"};
+    case cat::UnitClass::Velocity: return std::pair{"VNUM", "VDEN"};
+    case cat::UnitClass::Acceleration: return std::pair{"ANUM", "ADEN"};
+    case cat::UnitClass::Current: return std::pair{"INUM", "IDEN"};
+    case cat::UnitClass::ExtPosition: return std::pair{"PXNUM", "PXDEN"};
+    case cat::UnitClass::ExtVelocity: return std::pair{"VXNUM", "VXDEN"};
+    default: return std::nullopt;
+    }
+}
+
+// value and the NUM/DEN are 32-bit, so the product fits in 64 bits.
+std::optional<std::int64_t> scale(std::int64_t value, std::int64_t num, std::int64_t den) {
+    if (den == 0) return std::nullopt;
+    const std::int64_t product = value * num;
+    std::int64_t q = product / den;
+    const std::int64_t r = product % den;
+    const std::int64_t absR = r < 0 ? -r : r;
+    const std::int64_t absDen = den < 0 ? -den : den;
+    if (2 * absR >= absDen) q += ((product < 0) != (den < 0)) ? -1 : 1;
+    if (q > INT32_MAX || q < INT32_MIN) return std::nullopt;
+    return std::int64_t(q);
+}
+} // namespace
+
+std::optional<std::int64_t> Bds5VariableStore::toBasic(cat::UnitClass unit, std::int64_t user) const {
+    const auto pair = unitPair(unit);
+    if (!pair) return user;
+    return scale(user, read(*cat::findVariable(pair->first)), read(*cat::findVariable(pair->second)));
+}
+
+std::optional<std::int64_t> Bds5VariableStore::toUser(cat::UnitClass unit, std::int64_t basic) const {
+    const auto pair = unitPair(unit);
+    if (!pair) return basic;
+    return scale(basic, read(*cat::findVariable(pair->second)), read(*cat::findVariable(pair->first)));
+}
+
 std::optional<std::int32_t> Bds5VariableStore::read(std::string_view upperName) const {
     const auto ref = cat::findVariable(upperName);
     if (!ref) return std::nullopt;
-    return read(*ref);
+    const std::int32_t basic = read(*ref);
+    const auto user = toUser(ref->info->unitClass, basic);
+    if (!user) return basic < 0 ? INT32_MIN : INT32_MAX;
+    return std::int32_t(*user);
 }
 
 std::int32_t Bds5VariableStore::read(const cat::VariableRef& ref) const {
@@ -78,8 +122,11 @@ int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, boo
     case cat::WriteCondition::Always:
     case cat::WriteCondition::NoMotion: break;
     }
-    if (value < cat::minimumOf(*ref->info) || value > cat::maximumOf(*ref->info)) return 83;
-    set(*ref, std::int32_t(value));
+    const auto basic = toBasic(ref->info->unitClass, value);
+    if (!basic) return 96; // SCALING OVERFLOW (L7445)
+    // Limits are kept in basic units, as the catalog's values are (chosen: one scale for both).
+    if (*basic < cat::minimumOf(*ref->info) || *basic > cat::maximumOf(*ref->info)) return 83;
+    set(*ref, std::int32_t(*basic));
     return 0;
 }
 

@@ -1,5 +1,6 @@
 // The BDS5's variable memory: one value per catalog variable (and per index of indexed families),
-// initialised from the catalog's power-up values. Values are kept in basic units.
+// initialised from the catalog's power-up values. Values are kept in basic units; reads and writes by
+// name are in user units, through the NUM/DEN pair of the variable's unit class (L5027-5246).
 #pragma once
 
 #include "drive_core/catalog/bds5_catalog.h"
@@ -18,12 +19,21 @@ public:
     // Power-up: volatile variables take their power-up values; remembered ones keep theirs.
     void powerUp();
 
+    // In user units; nullopt if there is no such variable. A value that overflows 32 bits in user units
+    // reads as the nearest 32-bit value (ERR 96 is a write's error).
     std::optional<std::int32_t> read(std::string_view upperName) const;
+    // In basic units.
     std::int32_t read(const catalog::bds5::VariableRef& ref) const;
 
-    // The drive's checks for a write from the terminal or a program: 0 if accepted, else the error
-    // number (80 unknown, 81 monitor variable, 111 factory, 51 needs disabled, 83 out of range).
+    // The drive's checks for a write (in user units) from the terminal or a program: 0 if accepted, else
+    // the error number (80 unknown, 81 monitor variable, 111 factory, 51 needs disabled, 83 out of
+    // range, 96 scaling overflow).
     int write(std::string_view upperName, std::int64_t value, bool driveEnabled);
+
+    // User <-> basic for a unit class: basic = user * NUM / DEN, rounded to nearest (halves away from
+    // zero — the manual is silent). nullopt on overflow or a zero denominator.
+    std::optional<std::int64_t> toBasic(catalog::bds5::UnitClass unit, std::int64_t user) const;
+    std::optional<std::int64_t> toUser(catalog::bds5::UnitClass unit, std::int64_t basic) const;
 
     // Unchecked write, for the drive's own bookkeeping (monitor variables it maintains).
     void set(const catalog::bds5::VariableRef& ref, std::int32_t value);

@@ -126,3 +126,27 @@ TEST(Bds5Print, ClearXZeroesUserVariables) { // v3 L9308
     t.type("CLEARX\r");
     EXPECT_EQ(t.type("P X9 XS2\r"), "P X9 XS2\r\n           0           0\r\n-->");
 }
+
+TEST(Bds5Units, VelocityReadsInRpmAndStoresBasicUnits) { // Table 4.11: VNUM/VDEN = 44739/10 per RPM
+    TestDrive t;
+    EXPECT_EQ(t.type("P VMAX\r"), "P VMAX\r\n        7500\r\n-->");
+    t.type("VNUM=447392\r");
+    t.type("VDEN=100\r");
+    EXPECT_EQ(t.type("P VMAX\r"), "P VMAX\r\n        7500\r\n-->") << "the same speed in a finer unit";
+}
+
+TEST(Bds5Units, ChangingUnitsReinterpretsStoredValues) { // L5091-5097
+    TestDrive t;
+    t.type("PNUM=4096\r");
+    t.type("PDEN=1\r"); // position in revolutions
+    EXPECT_EQ(t.type("PMAX=3\r"), "PMAX=3\r\n-->");
+    t.type("PNUM=1\r"); // back to counts: the stored 3 revolutions read as counts
+    EXPECT_EQ(t.type("P PMAX\r"), "P PMAX\r\n       12288\r\n-->");
+}
+
+TEST(Bds5Units, ScalingOverflowIsErr96) {
+    TestDrive t;
+    t.type("PNUM=1000000\r");
+    const std::string out = t.type("PMAX=1000000\r");
+    EXPECT_NE(out.find("\aERR 96"), std::string::npos) << out;
+}

@@ -20,7 +20,7 @@
 //   0xFA n   setInput(n%16 + 1, n & 0x80)
 //   0xFB n   raiseFault(n)
 //   0xFC     powerUp()
-//   0xFD n   receive the bytes since the last operation (n+1)*16 times over, at most 1 MB (floods)
+//   0xFD n   receive the bytes since the last operation (n+1)*16 times over, at most 16 KB (floods)
 //   0xFE n   step(7n + 1 us): sub-millisecond steps
 //   0xFF x   receive the literal byte x
 // Every other byte is received as it is. At the end 50 ms pass, ^X breaks any program, and the
@@ -32,7 +32,7 @@ using drive_core::Microseconds;
 using drive_core::bds5::Bds5Drive;
 using namespace std::chrono_literals;
 
-constexpr std::size_t kMaxFlood = std::size_t(1) << 20;
+constexpr std::size_t kMaxFlood = std::size_t(1) << 14;
 // BDS5_FUZZ_TRACE=1 copies what the drive sends to stderr, to read a reproducer's session.
 const bool kTrace = std::getenv("BDS5_FUZZ_TRACE") != nullptr;
 
