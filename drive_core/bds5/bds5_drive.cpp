@@ -149,6 +149,8 @@ void Bds5Drive::handleEscape() {
     const bool messages = switchOn("MSG", true);
     switch (m_mode) {
     case Bds5DriveMode::Interactive:
+        // Esc stops a <BDS or DUMP listing still on its way out (L5350); chosen: the rest is dropped.
+        if (m_uart.busy() && m_promptPending) m_uart.discard();
         transmit(kCrLf);
         m_promptPending = false;
         sendHeldErrors("");

@@ -1,6 +1,7 @@
 // BDS5 instruction execution. The full language grows here (issue 3); motion arrives with issue 4.
 #include "bds5_interpreter.h"
 
+#include "bds5_dump.h"
 #include "bds5_expression.h"
 #include "bds5_printer.h"
 #include "drive_core/catalog/bds5_catalog.h"
@@ -13,6 +14,7 @@ namespace drive_core::bds5 {
 namespace cat = catalog::bds5;
 
 void logError(Bds5State& state, int code) {
+    if (code != 199) state.variables.set("LSTERR", code); // LSTERR: the last error (digest §4.14)
     state.errorHistory.push_front(code);
     while (state.errorHistory.size() > kErrorHistorySize) state.errorHistory.pop_back();
 }
@@ -122,6 +124,18 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word == "PA" || word == "PAS") return {print(entries, "", word == "PAS", out)};
     if (word == "INPUT") return input(entries, out);
     if (word == "ERR") return {errCommand(entries, out)};
+    if (word == "DUMP") { // interactive, drive disabled (ERR 51) (L5396-5414)
+        if (args.size() > 1) return {Bds5Error{82, args[1].text, 0}};
+        const std::string what = args.empty() ? std::string() : args.front().text;
+        if (what == "VERSION") {
+            out += dumpVersion();
+            return {};
+        }
+        if (!what.empty() && what != "TL") return {Bds5Error{83, what, 0}};
+        if (m_state.enabled) return {Bds5Error{51, joined(entries), 0}};
+        out += what == "TL" ? dumpLoopGains(m_state) : dumpAll(m_state);
+        return {};
+    }
     if (word == "EN" || word == "DIS") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
         m_state.enabled = word == "EN";

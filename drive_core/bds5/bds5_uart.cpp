@@ -42,6 +42,12 @@ void Bds5Uart::advance(Microseconds dt) {
     }
 }
 
+void Bds5Uart::discard() {
+    m_fifo.clear();
+    m_head = 0;
+    m_atLineStart = m_sent.empty() || m_sent.back() == '\n';
+}
+
 std::string Bds5Uart::takeSent() { return std::exchange(m_sent, {}); }
 
 } // namespace drive_core::bds5

@@ -18,6 +18,8 @@ public:
     void write(std::string_view bytes);
     // Lets dt of line time pass: moves what the line carried in that time to the sent buffer.
     void advance(Microseconds dt);
+    // Drops whatever has not been sent yet (Esc stopping a <BDS or DUMP listing).
+    void discard();
     // Returns and clears what has left the drive.
     std::string takeSent();
 

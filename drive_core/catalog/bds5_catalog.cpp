@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <unordered_map>
+#include <vector>
 
 namespace drive_core::catalog::bds5 {
 
@@ -20,29 +22,46 @@ const CommandInfo* findCommand(std::string_view upperName) {
     return it == table.end() ? nullptr : &*it;
 }
 
-std::optional<VariableRef> findVariable(std::string_view upperName) {
-    // Plain names first: "XS" is not X with index "S", and "TMR1" must not match a plain "TMR".
-    for (const VariableInfo& v : variables()) {
-        if (v.firstIndex == 0 && v.name == upperName) return VariableRef{&v, 0};
+namespace {
+// findVariable runs for every switch the drive consults (ECHO per received byte, SERIAL and TMR1-4 per
+// step, MULTI per program line), so the catalog is indexed once: plain names in a hash map, the
+// indexed families (X, XS, I, O, TMR, ...) in a short list, longest stem first.
+struct VariableIndex {
+    std::unordered_map<std::string_view, const VariableInfo*> plain;
+    std::vector<const VariableInfo*> families;
+
+    VariableIndex() {
+        for (const VariableInfo& v : variables()) {
+            if (v.firstIndex == 0)
+                plain.emplace(v.name, &v); // a repeated name: the first one wins
+            else
+                families.push_back(&v);
+        }
+        std::stable_sort(families.begin(), families.end(), [](const VariableInfo* a, const VariableInfo* b) {
+            return a->name.size() > b->name.size();
+        });
     }
+};
+} // namespace
+
+std::optional<VariableRef> findVariable(std::string_view upperName) {
+    static const VariableIndex kIndex;
+    // Plain names first: "XS" is not X with index "S", and "TMR1" must not match a plain "TMR".
+    if (const auto it = kIndex.plain.find(upperName); it != kIndex.plain.end())
+        return VariableRef{it->second, 0};
     // Indexed families: the longest stem followed by a decimal index in range.
-    const VariableInfo* best = nullptr;
-    int bestIndex = 0;
-    for (const VariableInfo& v : variables()) {
-        if (v.firstIndex == 0 || !upperName.starts_with(v.name)) continue;
-        const std::string_view digits = upperName.substr(v.name.size());
-        if (digits.empty() || digits.front() == '0' ||
-            !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    for (const VariableInfo* v : kIndex.families) {
+        if (!upperName.starts_with(v->name)) continue;
+        const std::string_view digits = upperName.substr(v->name.size());
+        if (digits.empty() || digits.front() == '0' || !std::all_of(digits.begin(), digits.end(), [](char c) {
+                return std::isdigit(static_cast<unsigned char>(c));
+            }))
             continue;
         int index = 0;
         const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
-        if (ec != std::errc{} || index < v.firstIndex || index > v.lastIndex) continue;
-        if (!best || v.name.size() > best->name.size()) {
-            best = &v;
-            bestIndex = index;
-        }
+        if (ec != std::errc{} || index < v->firstIndex || index > v->lastIndex) continue;
+        return VariableRef{v, index};
     }
-    if (best) return VariableRef{best, bestIndex};
     return std::nullopt;
 }
 

@@ -195,3 +195,43 @@ TEST_F(Bds5Program, ProgramTooLargeIsErr86) {
     EXPECT_NE(last.find("ERR 86"), std::string::npos) << last;
     type("\x1b");
 }
+
+TEST_F(Bds5Program, DumpListsProgramAndVariablesForResending) { // L5396-5414
+    download({"1$", "B"});
+    type("X1=111234\r");
+    const std::string out = type("DUMP\r");
+    EXPECT_EQ(out.find("DUMP\r\n;1$\r\n;B\r\n"), 0u) << out.substr(0, 80);
+    EXPECT_NE(out.find("\r\nX1 111234\r\n"), std::string::npos);
+    EXPECT_NE(out.find("\r\nBAUD 9600\r\n"), std::string::npos);
+    EXPECT_NE(out.find("\r\n;VMAX 7500\r\n"), std::string::npos) << "protected: prefixed with ;";
+    EXPECT_TRUE(out.ends_with("\r\n-->"));
+    // Re-sending every line of the dump is harmless: no line draws an error.
+    std::size_t start = out.find("\r\n") + 2;
+    int errors = 0;
+    for (std::size_t end; (end = out.find("\r\n", start)) != std::string::npos; start = end + 2) {
+        const std::string line = out.substr(start, end - start);
+        if (line.empty() || line == "-->") continue;
+        const std::string answer = type(line + "\r");
+        if (answer.find("\aERR") != std::string::npos) {
+            ++errors;
+            ADD_FAILURE() << line << " -> " << answer;
+        }
+    }
+    EXPECT_EQ(errors, 0);
+}
+
+TEST_F(Bds5Program, DumpNeedsTheDriveDisabled) {
+    type("EN\r");
+    EXPECT_NE(type("DUMP\r").find("\aERR 51 'DUMP'"), std::string::npos);
+    EXPECT_EQ(type("DUMP VERSION\r"), "DUMP VERSION\r\nBDS5 FIRMWARE V3.0.0 (SERVODESK SIMULATION)\r\n-->");
+}
+
+TEST_F(Bds5Program, EscapeStopsAListing) {
+    drive.receive("DUMP\r");
+    for (int i = 0; i < 100; ++i) drive.step(1ms);
+    drive.takeTransmitted();
+    EXPECT_TRUE(drive.transmitting());
+    const std::string rest = type("\x1b");
+    EXPECT_TRUE(rest.ends_with("\r\n-->")) << rest;
+    EXPECT_LT(rest.size(), 200u) << "the rest of the dump was dropped";
+}

@@ -56,7 +56,8 @@ public:
         m_drive.step(dt);
         const std::string out = m_drive.takeTransmitted();
         const double carried = double(dt.count()) * m_drive.baudRate() / 10.0 / 1e6;
-        if (double(out.size()) > carried + 2.0) fail("output faster than the baud rate", (long long)out.size(), dt.count());
+        if (double(out.size()) > carried + 2.0)
+            fail("output faster than the baud rate", (long long)out.size(), dt.count());
         m_sent += out.size();
         if (kTrace) std::fwrite(out.data(), 1, out.size(), stderr);
         checkState();
@@ -67,8 +68,10 @@ public:
         if (program.sizeChars() > drive_core::bds5::kProgramCapacityChars)
             fail("program memory over capacity", (long long)program.sizeChars());
         std::size_t counted = 0;
-        for (const std::string& line : program.lines()) counted += line.size() + 1; // each line with its CR
-        if (counted != program.sizeChars()) fail("program size bookkeeping", (long long)counted, (long long)program.sizeChars());
+        for (const std::string& line : program.lines())
+            counted += line.size() + 1; // each line with its CR
+        if (counted != program.sizeChars())
+            fail("program size bookkeeping", (long long)counted, (long long)program.sizeChars());
         if (m_drive.state().errorHistory.size() > drive_core::bds5::kErrorHistorySize)
             fail("error history over 20 entries", (long long)m_drive.state().errorHistory.size());
     }
@@ -81,7 +84,8 @@ public:
     // (a listing, the editor's P BEG END: a few characters a stored one); a backlog beyond that grew by
     // itself, e.g. a program printing faster than the line can carry.
     void finish() {
-        for (int i = 0; i < 50; ++i) step(1ms);
+        for (int i = 0; i < 50; ++i)
+            step(1ms);
         receive("\x18");
         step(1ms);
         const std::size_t bound =
@@ -91,7 +95,8 @@ public:
             const std::size_t before = m_sent;
             step(1s);
             drained += m_sent - before;
-            if (drained > bound) fail("transmit backlog grows without bound", (long long)drained, (long long)bound);
+            if (drained > bound)
+                fail("transmit backlog grows without bound", (long long)drained, (long long)bound);
         }
     }
 
@@ -125,26 +130,38 @@ void run(const std::uint8_t* data, std::size_t size) {
         if (b == 0xFD) {
             const std::size_t times = (std::size_t(arg()) + 1) * 16;
             std::string flood;
-            for (std::size_t n = 0; n < times && flood.size() + pending.size() <= kMaxFlood; ++n) flood += pending;
+            for (std::size_t n = 0; n < times && flood.size() + pending.size() <= kMaxFlood; ++n)
+                flood += pending;
             pending = std::move(flood);
         }
         flush();
         s.countOperation();
         switch (b) {
-        case 0xF8: s.step(Microseconds(1000 * (arg() + 1))); break;
+        case 0xF8:
+            s.step(Microseconds(1000 * (arg() + 1)));
+            break;
         case 0xF9:
-            for (int n = arg(); n >= 0; --n) s.step(10ms);
+            for (int n = arg(); n >= 0; --n)
+                s.step(10ms);
             break;
         case 0xFA: {
             const std::uint8_t n = arg();
             s.drive().setInput(n % 16 + 1, (n & 0x80) != 0);
             break;
         }
-        case 0xFB: s.drive().raiseFault(arg()); break;
-        case 0xFC: s.drive().powerUp(); break;
-        case 0xFD: break; // received above
-        case 0xFE: s.step(Microseconds(7 * arg() + 1)); break;
-        default: break;
+        case 0xFB:
+            s.drive().raiseFault(arg());
+            break;
+        case 0xFC:
+            s.drive().powerUp();
+            break;
+        case 0xFD:
+            break; // received above
+        case 0xFE:
+            s.step(Microseconds(7 * arg() + 1));
+            break;
+        default:
+            break;
         }
     }
     flush();
