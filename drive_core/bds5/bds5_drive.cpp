@@ -29,19 +29,44 @@ Bds5Drive::Bds5Drive() {
 }
 
 void Bds5Drive::powerUp() {
+    // Inputs are wires, not memory: a power cycle does not change what they read.
+    std::vector<std::pair<std::string, std::int32_t>> inputs;
+    for (int i = 1; i <= kInputCount; ++i) inputs.emplace_back("I" + std::to_string(i), 0);
+    for (const char* name : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"}) inputs.emplace_back(name, 0);
+    for (auto& [name, value] : inputs) value = m_state.variables.read(name).value_or(0);
     m_state.variables.powerUp();
+    if (m_poweredBefore)
+        for (const auto& [name, value] : inputs) m_state.variables.set(name, value);
+    m_poweredBefore = true;
     m_state.enabled = false;
     logError(m_state, 199); // DRIVE POWERED UP is logged at every power-up (L6118, L7503)
     m_executor.stop();
     m_mode = Bds5DriveMode::Interactive;
     m_received.clear();
     m_line.clear();
-    chooseBaudRate();
     m_heldErrors.clear();
     m_time = Microseconds{0};
     m_powered = true;
     m_promptPending = m_breakPending = false;
-    // ABAUD off and MOTION on: no autobaud, the sign-on goes out at once (digest §2.2).
+    // Autobaud (digest §2.2): MOTION off at power-up (which also forces ADDR=0), ABAUD on with ADDR 0, or
+    // an invalid BAUD (ERR 103, history only). ABAUD on with ADDR set is ERR 104, history only.
+    bool autobaud = false;
+    if (!switchOn("MOTION", true)) {
+        m_state.variables.set("ADDR", 0);
+        autobaud = true;
+    }
+    const bool abaud = switchOn("ABAUD", false);
+    if (abaud && addressId()) logError(m_state, 104);
+    else if (abaud) autobaud = true;
+    if (!chooseBaudRate()) autobaud = true;
+    m_port.powerUp(addressId(), autobaud, m_time);
+    m_uart.setMuted(!m_port.transmits());
+    // Multitasking and POWER-UP$ wait until communications are established (L1919, L4559-4567).
+    if (!autobaud) establishCommunications();
+}
+
+// Sign-on, then POWER-UP$ or the prompt (L4929-4944).
+void Bds5Drive::establishCommunications() {
     if (switchOn("MSG", true)) {
         transmit(kCrLf);
         transmit(kSignOn);
@@ -65,6 +90,9 @@ void Bds5Drive::step(Microseconds dt) {
     m_time += dt;
     if (!m_powered) return;
     tickTimers(dt);
+    // The serial watchdog: no CR for WTIME ms with WATCH on is ERR 105, break and disable (L5328-5342).
+    if (m_port.watchdogExpired(m_time, switchOn("WATCH", false), m_state.variables.read("WTIME").value_or(1000)))
+        raiseFault(105);
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
     if (m_executor.running()) runProgram();
@@ -93,6 +121,15 @@ void Bds5Drive::setInput(int number, bool on) {
     m_state.variables.set("I" + std::to_string(number), on ? 1 : 0);
 }
 
+bool Bds5Drive::setDedicatedInput(std::string_view name, bool on) {
+    for (const char* dedicated : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"}) {
+        if (name != dedicated) continue;
+        m_state.variables.set(name, on ? 1 : 0);
+        return true;
+    }
+    return false;
+}
+
 bool Bds5Drive::input(int number) const {
     return number >= 1 && number <= kInputCount && m_state.variables.read("I" + std::to_string(number)).value_or(0);
 }
@@ -104,6 +141,11 @@ bool Bds5Drive::output(int number) const {
 
 void Bds5Drive::raiseFault(int code) {
     logError(m_state, code);
+    const auto* info = catalog::bds5::findError(code);
+    if (info && info->severity >= catalog::bds5::Severity::Disable) { // level 3: disable, FAULT latch
+        m_state.enabled = false;
+        m_state.variables.set("FAULT", 1);
+    }
     const Bds5Error error{code, {}, 0};
     if (m_executor.running()) programStopped(ProgramStop::Error, error); // faults break the program
     else if (m_promptPending) m_heldErrors.push_back(error);
@@ -111,6 +153,18 @@ void Bds5Drive::raiseFault(int code) {
 }
 
 void Bds5Drive::handleByte(char c) {
+    switch (m_port.accept(c, m_time)) {
+    case Bds5Port::Verdict::Drop: m_uart.setMuted(!m_port.transmits()); return;
+    case Bds5Port::Verdict::AutobaudDone:
+        m_uart.setMuted(!m_port.transmits());
+        return establishCommunications();
+    case Bds5Port::Verdict::Woken: // "\A" answers CR LF and the prompt (L10015-10028)
+        m_uart.setMuted(false);
+        transmit(kCrLf);
+        m_promptPending = false;
+        return sendPrompt();
+    case Bds5Port::Verdict::Process: break;
+    }
     if (c == kCtrlX) return handleBreakCharacter();
     if (c == kEscape) return handleEscape();
     if (c == kCtrlV) return m_executor.fireVariableTask(); // the VARIABLE$ task (L4818)
@@ -261,10 +315,7 @@ void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
         }
         m_mode = Bds5DriveMode::ProgramLoad;
         m_loadStarted = false;
-        m_promptPending = false;
-        transmit(kLoadPrompt);
-        m_promptPending = true;
-        return;
+        return sendPrompt();
     case Flow::List:
         for (const std::string& l : m_state.program.lines()) {
             transmit(l);
@@ -286,12 +337,14 @@ void Bds5Drive::loadLine(std::string line) {
         logError(m_state, 86);
         sendError(Bds5Error{86, ">BDS", 0}, kErrorPreamble); // USER PROGRAM FULL (L7396)
     }
-    transmit(kLoadPrompt);
-    m_promptPending = true;
+    sendPrompt();
 }
 
 void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
-    transmit(reply.output);
+    std::string output = reply.output;
+    for (const char* p : {"e->", "i->", "f->", "c->"}) // the editor speaks single-drop; multidrop adds the ID
+        if (output.ends_with(p)) output.replace(output.size() - 3, 3, m_port.prompt(p));
+    transmit(output);
     if (const auto code = m_editor.takeError()) logError(m_state, *code); // ERR 86 / 110 go to ERR HIST
     if (reply.exited) {
         m_mode = Bds5DriveMode::Interactive;
@@ -303,7 +356,9 @@ void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
 
 void Bds5Drive::sendError(const Bds5Error& error, std::string_view preamble) {
     transmit(preamble);
-    transmit(std::string(1, kBell) + formatError(error) + std::string(kCrLf));
+    std::string text = formatError(error);
+    if (switchOn("DEP", false) && text.size() > 40) text.resize(40); // the DEP-01's 40 columns (L6102-6108)
+    transmit(std::string(1, kBell) + text + std::string(kCrLf));
 }
 
 void Bds5Drive::sendHeldErrors(std::string_view preamble) {
@@ -312,23 +367,32 @@ void Bds5Drive::sendHeldErrors(std::string_view preamble) {
 }
 
 void Bds5Drive::sendPrompt() {
+    m_port.setAxis(addressId()); // ADDR set from the terminal takes effect at once (L5424)
     if (!m_uart.atLineStart()) transmit(kCrLf); // every prompt follows CR LF (L9609)
     const std::string prompt = m_mode == Bds5DriveMode::Monitor       ? std::string(kMonitorPrompt)
                                : m_mode == Bds5DriveMode::ProgramLoad ? std::string(kLoadPrompt)
                                : m_mode == Bds5DriveMode::SingleStep  ? currentStepPrompt()
                                                                       : std::string(kInteractivePrompt);
-    if (switchOn("PROMPT", true)) transmit(prompt); // PROMPT OFF suppresses it (L1550, L5320-5326)
+    if (switchOn("PROMPT", true)) transmit(m_port.prompt(prompt)); // PROMPT OFF: none (L1550, L5320-5326)
     m_promptPending = true;
 }
 
 void Bds5Drive::transmit(std::string_view bytes) { m_uart.write(bytes); }
 
-// The rate is fixed at power-up from BAUD (ABAUD off, MOTION on); an invalid BAUD logs ERR 103 to the
-// history only (digest §2.2). Autobaud on CRs arrives with the serial issue.
-void Bds5Drive::chooseBaudRate() {
+// The rate is fixed at power-up from BAUD; false (ERR 103, history only) if BAUD is no valid rate.
+bool Bds5Drive::chooseBaudRate() {
     const std::int32_t baud = m_state.variables.read("BAUD").value_or(9600);
-    if (!Bds5Uart::validBaud(baud)) logError(m_state, 103);
-    m_uart.reset(Bds5Uart::validBaud(baud) ? baud : 9600);
+    const bool valid = Bds5Uart::validBaud(baud);
+    if (!valid) logError(m_state, 103);
+    m_uart.reset(valid ? baud : 9600);
+    return valid;
+}
+
+// ADDR 48-57 ('0'-'9') or 65-90 ('A'-'Z') is this axis' multidrop ID; 0 is single-drop (L5416-5424).
+std::optional<char> Bds5Drive::addressId() const {
+    const std::int32_t addr = m_state.variables.read("ADDR").value_or(0);
+    if ((addr >= '0' && addr <= '9') || (addr >= 'A' && addr <= 'Z')) return char(addr);
+    return std::nullopt;
 }
 
 bool Bds5Drive::switchOn(std::string_view name, bool fallback) const {

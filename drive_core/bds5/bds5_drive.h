@@ -6,6 +6,7 @@
 #include "bds5_executor.h"
 #include "bds5_interpreter.h"
 #include "bds5_resident_editor.h"
+#include "bds5_port.h"
 #include "bds5_uart.h"
 #include "drive_core/drive.h"
 
@@ -40,6 +41,10 @@ public:
     bool input(int number) const override;
     bool output(int number) const override;
 
+    // The dedicated inputs: REMOTE, HOME, CYCLE, LIMIT, MOTION, GATE, MANUAL (L820-836). False if the name
+    // is none of them.
+    bool setDedicatedInput(std::string_view name, bool on);
+
     // An asynchronous fault (feedback loss, over-speed, ...): logged at once, printed when the host
     // next sends CR or Esc, never while a prompt is pending (L9712-9739).
     void raiseFault(int code);
@@ -72,8 +77,10 @@ private:
     void sendPrompt();
     void transmit(std::string_view bytes);
     bool switchOn(std::string_view name, bool fallback) const;
+    void establishCommunications();
+    std::optional<char> addressId() const;
     void tickTimers(Microseconds dt);
-    void chooseBaudRate();
+    bool chooseBaudRate();
 
     Bds5State m_state;
     Bds5Interpreter m_interpreter{m_state};
@@ -82,6 +89,7 @@ private:
     Bds5DriveMode m_mode = Bds5DriveMode::Interactive;
     std::string m_received;    // UART receive buffer, not yet processed
     Bds5Uart m_uart;
+    Bds5Port m_port;
     std::string m_line;        // the instruction being typed
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
@@ -89,6 +97,7 @@ private:
     bool m_stepGranted = false; // single-step: Enter lets the shown line run
     bool m_loadStarted = false;  // >BDS: the first line erases the program (L9957)
     bool m_powered = false;
+    bool m_poweredBefore = false; // inputs keep their state across later power cycles
     Microseconds m_time{0};
     Microseconds m_timerRemainder{0};
 };

@@ -76,6 +76,11 @@ void Bds5Drive::runProgram(int label) {
     }
     m_executor.start(line, m_time);
     m_mode = Bds5DriveMode::Running; // no prompt while the program runs
+    if (switchOn("MONITOR", false)) { // v3 MONITOR 1: monitor mode whenever a program starts (L9302)
+        transmit(switchOn("MSG", true) ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "");
+        m_mode = Bds5DriveMode::Monitor;
+        sendPrompt();
+    }
 }
 
 void Bds5Drive::runProgram() {

@@ -29,7 +29,7 @@ void Bds5Uart::write(std::string_view bytes) {
 void Bds5Uart::advance(Microseconds dt) {
     m_credit += double(dt.count()) * m_baud / 10.0 / 1e6;
     const std::size_t n = std::min(m_fifo.size() - m_head, std::size_t(m_credit));
-    m_sent.append(m_fifo, m_head, n);
+    if (!m_muted) m_sent.append(m_fifo, m_head, n);
     m_head += n;
     m_credit -= double(n);
     if (m_head == m_fifo.size()) { // an idle line banks no credit for later

@@ -18,6 +18,8 @@ public:
     void write(std::string_view bytes);
     // Lets dt of line time pass: moves what the line carried in that time to the sent buffer.
     void advance(Microseconds dt);
+    // Muted, bytes still take their time on the line but reach no one (a sleeping multidrop axis).
+    void setMuted(bool muted) { m_muted = muted; }
     // Drops whatever has not been sent yet (Esc stopping a <BDS or DUMP listing).
     void discard();
     // Returns and clears what has left the drive.
@@ -34,6 +36,7 @@ private:
     double m_credit = 0; // characters the line may carry now
     int m_baud = 9600;
     bool m_atLineStart = true;
+    bool m_muted = false;
 };
 
 } // namespace drive_core::bds5

@@ -24,15 +24,19 @@
 //   0xFE n   step(7n + 1 us): sub-millisecond steps
 //   0xFF x   receive the literal byte x
 // Every other byte is received as it is. At the end 50 ms pass, ^X breaks any program, and the
-// transmitter must drain within the backlog bound (see Session::finish).
+// transmitter must drain within the backlog bound (see Session::finish); a session that leaves a program
+// running is run twice, the second time with 10 s more before the ^X (see LLVMFuzzerTestOneInput).
 
 namespace {
 
 using drive_core::Microseconds;
 using drive_core::bds5::Bds5Drive;
+using drive_core::bds5::Bds5DriveMode;
 using namespace std::chrono_literals;
 
 constexpr std::size_t kMaxFlood = std::size_t(1) << 14;
+constexpr Microseconds kExtraRun = 10s; // more program time for the outrun check
+constexpr Microseconds kExtraStep = 100ms;
 // BDS5_FUZZ_TRACE=1 copies what the drive sends to stderr, to read a reproducer's session.
 const bool kTrace = std::getenv("BDS5_FUZZ_TRACE") != nullptr;
 
@@ -79,25 +83,35 @@ public:
     // An operation that may make the drive talk without anything typed (a fault, a power-up).
     void countOperation() { ++m_operations; }
 
-    // ^X, then let the transmitter empty. Everything still queued must be explained by what was typed
-    // and done (echo, answers: ERR HIST is the wordiest, ~60 characters a typed byte) and by the program
-    // (a listing, the editor's P BEG END: a few characters a stored one); a backlog beyond that grew by
-    // itself, e.g. a program printing faster than the line can carry.
-    void finish() {
+    struct Ending {
+        std::size_t drained = 0;     // characters the transmitter still held after ^X
+        bool programRunning = false; // a program was still running when the input ended
+    };
+
+    // Lets 50 ms and then `extra` pass, types ^X and lets the transmitter empty. Everything still queued
+    // must be explained by what was typed and done (echo, answers: ERR HIST is the wordiest, ~60
+    // characters a typed byte) and by the program (a listing, the editor's P BEG END: a few characters a
+    // stored one); a backlog beyond that grew by itself.
+    Ending finish(Microseconds extra) {
         for (int i = 0; i < 50; ++i)
             step(1ms);
+        Ending ending;
+        const auto mode = m_drive.mode();
+        ending.programRunning = mode == Bds5DriveMode::Running || mode == Bds5DriveMode::Monitor;
+        for (; extra > Microseconds{0}; extra -= kExtraStep)
+            step(kExtraStep);
         receive("\x18");
         step(1ms);
         const std::size_t bound =
             128 * (m_received + m_operations) + 16 * m_drive.state().program.sizeChars() + 8192;
-        std::size_t drained = 0;
         while (m_drive.transmitting()) {
             const std::size_t before = m_sent;
             step(1s);
-            drained += m_sent - before;
-            if (drained > bound)
-                fail("transmit backlog grows without bound", (long long)drained, (long long)bound);
+            ending.drained += m_sent - before;
+            if (ending.drained > bound)
+                fail("transmit backlog grows without bound", (long long)ending.drained, (long long)bound);
         }
+        return ending;
     }
 
     Bds5Drive& drive() { return m_drive; }
@@ -109,7 +123,7 @@ private:
     std::size_t m_operations = 0;
 };
 
-void run(const std::uint8_t* data, std::size_t size) {
+Session::Ending run(const std::uint8_t* data, std::size_t size, Microseconds extra) {
     Session s;
     std::string pending; // plain bytes, handed to the drive before the next operation
     const auto flush = [&] {
@@ -165,14 +179,23 @@ void run(const std::uint8_t* data, std::size_t size) {
         }
     }
     flush();
-    s.finish();
+    return s.finish(extra);
 }
 
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {
-        run(data, size);
+        // A running program's prints wait for the line (L4637), so what is queued when it is broken
+        // does not depend on how long it ran. The same session run again with 10 s more of program
+        // time must leave about the same backlog; more means the program outruns the line.
+        const Session::Ending ending = run(data, size, Microseconds{0});
+        if (ending.programRunning) {
+            const Session::Ending longer = run(data, size, kExtraRun);
+            if (longer.drained > ending.drained + 4096)
+                fail("a running program's output outruns the line", (long long)longer.drained,
+                     (long long)ending.drained);
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bds5_drive_fuzz: exception escaped the drive: %s\n", e.what());
         std::abort();

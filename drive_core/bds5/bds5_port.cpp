@@ -1,0 +1,65 @@
+// BDS5 serial link layer.
+#include "bds5_port.h"
+
+namespace drive_core::bds5 {
+
+void Bds5Port::powerUp(std::optional<char> axisId, bool autobaud, Microseconds now) {
+    m_axis = axisId;
+    m_asleep = axisId.has_value(); // power-up in multidrop = asleep (L5424-5449)
+    m_broadcast = false;
+    m_autobaud = autobaud;
+    m_afterBackslash = false;
+    m_lastCr = now;
+}
+
+void Bds5Port::setAxis(std::optional<char> axisId) {
+    m_axis = axisId;
+    if (!axisId) m_asleep = m_broadcast = false;
+}
+
+Bds5Port::Verdict Bds5Port::accept(char c, Microseconds now) {
+    if (c == '\r') m_lastCr = now; // only CRs feed the watchdog, valid or not (L5332)
+    if (m_autobaud) {
+        // The seed: the host sends several CRs and the drive measures them. A simulation has no bit
+        // timing to measure, so the first CR completes autobaud at the configured rate (chosen).
+        if (c != '\r') return Verdict::Drop;
+        m_autobaud = false;
+        return Verdict::AutobaudDone;
+    }
+    if (!m_axis) return Verdict::Process;
+    if (m_afterBackslash) { // '\' + ID wakes that axis; any other character after '\' sleeps every axis
+        m_afterBackslash = false;
+        const bool mine = c == *m_axis;
+        m_asleep = !mine;
+        m_broadcast = false;
+        return mine ? Verdict::Woken : Verdict::Drop;
+    }
+    if (c == '\\') {
+        m_afterBackslash = true;
+        return Verdict::Drop;
+    }
+    if (c == '*') { // broadcast: every axis executes, none transmits (L5467-5469)
+        m_broadcast = true;
+        m_asleep = false;
+        return Verdict::Drop;
+    }
+    return m_asleep ? Verdict::Drop : Verdict::Process;
+}
+
+std::string Bds5Port::prompt(const std::string& singleDrop) const {
+    if (!m_axis || singleDrop.empty()) return singleDrop;
+    char mode = singleDrop[0]; // '-' interactive, '=' monitor, 's' single-step, 'e' 'l' 'i' 'f' 'c'
+    return std::string(1, *m_axis) + mode + '>';
+}
+
+bool Bds5Port::watchdogExpired(Microseconds now, bool watchOn, int wtimeMs) {
+    if (!watchOn || wtimeMs <= 0) {
+        m_lastCr = now;
+        return false;
+    }
+    if (now - m_lastCr < std::chrono::milliseconds(wtimeMs)) return false;
+    m_lastCr = now; // fires once a period of silence, not every millisecond after
+    return true;
+}
+
+} // namespace drive_core::bds5
