@@ -95,6 +95,7 @@ void Bds5Drive::step(Microseconds dt) {
         raiseFault(105);
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
+    m_state.motion.step(dt, m_state.variables);
     if (m_executor.running()) runProgram();
     m_uart.advance(dt);
     m_state.variables.set("SERIAL", m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)
@@ -145,6 +146,9 @@ void Bds5Drive::raiseFault(int code) {
     if (info && info->severity >= catalog::bds5::Severity::Disable) { // level 3: disable, FAULT latch
         m_state.enabled = false;
         m_state.variables.set("FAULT", 1);
+        m_state.motion.halt(); // disabled: the motor coasts
+    } else if (info && info->severity >= catalog::bds5::Severity::Break) {
+        m_state.motion.stop(m_state.variables); // level 2: stop at AMAX (L2231)
     }
     const Bds5Error error{code, {}, 0};
     if (m_executor.running()) programStopped(ProgramStop::Error, error); // faults break the program
@@ -249,6 +253,7 @@ void Bds5Drive::handleEscape() {
 // ^X: STOP + BREAK from any mode, even while a program runs (L2233-2235, L9868).
 void Bds5Drive::handleBreakCharacter() {
     m_line.clear();
+    m_state.motion.stop(m_state.variables); // ^X is S + B
     if (m_mode == Bds5DriveMode::Running || m_mode == Bds5DriveMode::Monitor ||
         m_mode == Bds5DriveMode::SingleStep) {
         m_executor.stop();

@@ -175,7 +175,11 @@ void Bds5Drive::inputLine(const std::string& line) {
 
 void Bds5Drive::programStopped(ProgramStop stop, const std::optional<Bds5Error>& error) {
     m_executor.stop();
-    if (stop == ProgramStop::Kill) m_state.enabled = false;
+    if (stop == ProgramStop::Kill) {
+        m_state.enabled = false;
+        m_state.motion.halt();
+    }
+    if (stop == ProgramStop::Error) m_state.motion.stop(m_state.variables); // breaking errors stop at AMAX
     if (m_mode == Bds5DriveMode::Monitor) { // the monitor prompt is up: news waits for the next CR
         if (error) m_heldErrors.push_back(*error);
         m_breakPending = true;

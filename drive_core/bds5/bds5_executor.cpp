@@ -110,6 +110,8 @@ bool Bds5Executor::idle(const Task& t) const {
     if (!t.active) return true;
     if (t.waitPrinter && printerBlocked()) return true;
     if (t.waitInput && m_state.pendingInput) return true;
+    if (t.waitMotion && m_state.motion.bufferFull()) return true;
+    if (t.waitSegment && !m_state.motion.waitDone(*t.waitSegment)) return true;
     if (t.wakeAt > m_cpu) return true;
     if (t.hold) {
         const auto v = m_state.variables.read(*t.hold);
@@ -200,6 +202,8 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
         if (t.waitPrinter) return ProgramStop::Running;
     }
     t.waitInput = false;
+    t.waitMotion = false;
+    t.waitSegment.reset();
     if (m_hook && !m_hook(level, line, out)) {
         m_paused = true; // single-step: this line waits for the operator's Enter
         return ProgramStop::Running;
@@ -258,6 +262,11 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
         return ProgramStop::Running;
     case Flow::Repeat: t.pc = line; return ProgramStop::Running;
     case Flow::Dwell: t.wakeAt = m_cpu + std::chrono::milliseconds(o.target); return ProgramStop::Running;
+    case Flow::WaitMotion: // pre-execution idle: the line runs again when the buffer has room
+        t.pc = line;
+        t.waitMotion = true;
+        return ProgramStop::Running;
+    case Flow::WaitSegment: t.waitSegment = o.target; return ProgramStop::Running;
     case Flow::Input:
         t.waitInput = true;
         m_state.pendingInput = o.input;

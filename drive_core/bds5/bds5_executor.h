@@ -75,6 +75,8 @@ private:
         bool holdOn = true;               // ... is in this state
         bool waitPrinter = false;         // a print waits for the serial port (pre-execution idle)
         bool waitInput = false;           // INPUT: idle until the operator answers
+        bool waitMotion = false;          // a move waits for room in the motion buffer
+        std::optional<int> waitSegment;   // W n
     };
 
     Task& task(TaskLevel level) { return m_tasks[std::size_t(level)]; }

@@ -79,7 +79,11 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word == "ELSE" || word == "ENDIF" || word == "RET" || word == "END" || word == "B" || word == "S" ||
         word == "K" || word == "<BDS" || word == "ED") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
-        if (word == "K") m_state.enabled = false;
+        if (word == "K") {
+            m_state.enabled = false;
+            m_state.motion.halt();
+        }
+        if (word == "S") m_state.motion.stop(m_state.variables); // decelerate at AMAX (L2212-2231)
         const Flow flow = word == "ELSE"    ? Flow::Else
                           : word == "ENDIF" ? Flow::Endif
                           : word == "RET"   ? Flow::Return
@@ -139,8 +143,12 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word == "EN" || word == "DIS") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
         m_state.enabled = word == "EN";
+        if (m_state.enabled) m_state.variables.set("FAULT", 0); // EN clears the FAULT latch (L2111-2115)
+        else m_state.motion.halt();
         return {};
     }
+    if (word == "J" || word == "MA" || word == "MI" || word == "W" || word == "NORM" || word == "ZPE")
+        return motionCommand(entries, context);
     if (word == "CLEARX") { // v3: zero X1-X750 and XS1-XS50 (L9308)
         for (int i = 1; i <= 250; ++i) m_state.variables.set("X" + std::to_string(i), 0);
         for (int i = 1; i <= 50; ++i) m_state.variables.set("XS" + std::to_string(i), 0);
@@ -149,6 +157,58 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word.find('=') != std::string::npos || cat::findVariable(word)) return {assign(entries)};
     // Known commands whose behaviour is not simulated yet answer as an unknown instruction would.
     return {Bds5Error{80, word, 0}};
+}
+
+std::optional<std::int64_t> Bds5Interpreter::basicValue(const Entry& entry, cat::UnitClass unit,
+                                                        std::optional<Bds5Error>& error) const {
+    const ExpressionResult r = evaluate(entry.text, [this](auto n) { return readValue(n); });
+    if (r.error) {
+        error = Bds5Error{r.error, entry.text, 0};
+        return std::nullopt;
+    }
+    const auto basic = m_state.variables.toBasic(unit, r.value);
+    if (!basic) error = Bds5Error{96, entry.text, 0};
+    return basic;
+}
+
+// J v | MA p [v] | MI d [v] | W n | NORM p | ZPE (L2277-2494, L4513-4549, App. C).
+Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const ExecContext& context) {
+    const std::string& word = entries.front().text;
+    const auto args = entries.subspan(1);
+    const bool twoArgs = word == "MA" || word == "MI";
+    const std::size_t most = twoArgs ? 2 : word == "ZPE" ? 0 : 1;
+    const std::size_t least = word == "ZPE" ? 0 : 1;
+    if (args.size() < least || args.size() > most) return {Bds5Error{82, joined(entries), 0}};
+    std::optional<Bds5Error> error;
+    if (word == "ZPE") return {}; // PCMD := PFB; with the ideal follower they are already equal
+    if (word == "W") {
+        const ExpressionResult r = evaluate(args[0].text, [this](auto n) { return readValue(n); });
+        if (r.error) return {Bds5Error{r.error, args[0].text, 0}};
+        if (r.value < 0 || r.value > 30) return {Bds5Error{83, args[0].text, 0}};
+        return {std::nullopt, Flow::WaitSegment, r.value};
+    }
+    const auto unit = word == "J" ? cat::UnitClass::Velocity : cat::UnitClass::Position;
+    const auto first = basicValue(args[0], unit, error);
+    if (!first) return {error};
+    if (word == "NORM") {
+        if (const int e = m_state.motion.normalize(*first)) return {Bds5Error{e, joined(entries), 0}};
+        return {};
+    }
+    if (word == "J") {
+        if (const int e = m_state.motion.jog(m_state.variables, m_state.enabled, *first))
+            return {Bds5Error{e, joined(entries), 0}};
+        return {};
+    }
+    std::optional<std::int64_t> velocity;
+    if (args.size() == 2) {
+        velocity = basicValue(args[1], cat::UnitClass::Velocity, error);
+        if (!velocity) return {error};
+    }
+    const int e = m_state.motion.move(m_state.variables, m_state.enabled, *first, velocity, word == "MI");
+    // A full buffer idles a program before the command (L4637-4641); typed, it is ERR 30 (L7242).
+    if (e == 30 && context.origin == Origin::Program) return {std::nullopt, Flow::WaitMotion};
+    if (e) return {Bds5Error{e, joined(entries), 0}};
+    return {};
 }
 
 // ? cond [TRUE-instr] [: FALSE-instr] — either instruction may be omitted but not both (L3836-3900).

@@ -5,6 +5,7 @@
 
 #include "bds5_error.h"
 #include "bds5_lexer.h"
+#include "bds5_motion.h"
 #include "bds5_program.h"
 #include "bds5_variable_store.h"
 
@@ -28,6 +29,7 @@ struct InputRequest {
 struct Bds5State {
     Bds5VariableStore variables;
     Bds5Program program;
+    Bds5Motion motion;
     std::deque<int> errorHistory; // ERR HIST, newest first, at most 20 entries (L6110-6148)
     bool enabled = false;         // drive enabled (EN) / inhibited (DIS, K)
     bool serialBusy = false;      // the UART is still sending: printing commands idle before running
@@ -65,6 +67,8 @@ enum class Flow {
     List,     // <BDS
     Edit,     // ED: enter the resident editor
     Input,    // INPUT: the program waits for the operator (Outcome::input)
+    WaitMotion,  // MA/MI/MCGO with the motion buffer full: run this line again when there is room
+    WaitSegment, // W n: idle until segment target of the last motion command has started
     If,       // IF c: condition
     Elif,     // ELIF c: condition
     Else,
@@ -101,6 +105,10 @@ private:
     // cond := expr ('GT'|'GE'|'LT'|'LE'|'EQ'|'NE') expr — three entries starting at entries[0].
     std::optional<bool> condition(std::span<const Entry> entries, std::optional<Bds5Error>& error) const;
     std::optional<std::int32_t> readValue(std::string_view name) const;
+    Outcome motionCommand(std::span<const Entry> entries, const ExecContext& context);
+    // Evaluates an entry and converts it from user to basic units; error set on failure.
+    std::optional<std::int64_t> basicValue(const Entry& entry, catalog::bds5::UnitClass unit,
+                                           std::optional<Bds5Error>& error) const;
 
     Bds5State& m_state;
 };

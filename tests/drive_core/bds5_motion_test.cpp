@@ -1,0 +1,116 @@
+// BDS5 motion commands on the profile generator: checks before motion, buffering and idling, W, SEG.
+// (The motor follows the command exactly until the servo physics arrives: PFB = PCMD.)
+#include "bds5_test_drive.h"
+
+using namespace bds5_test;
+
+namespace {
+std::string value(TestDrive& t, const std::string& name) {
+    const std::string out = t.type("P " + name + "\r");
+    const auto start = out.find("\r\n") + 2;
+    const auto end = out.find("\r\n", start);
+    std::string v = out.substr(start, end - start);
+    v.erase(0, v.find_first_not_of(' '));
+    return v;
+}
+} // namespace
+
+TEST(Bds5Motion, NeedsAnEnabledDrive) { // L6039-6050
+    TestDrive t;
+    t.type("DIS\r");
+    const std::string out = t.type("J 100\r");
+    EXPECT_NE(out.find("\aERR 50 'J 100'"), std::string::npos) << out;
+    EXPECT_TRUE(out.ends_with("DRIVE INHIBITED\r\n-->"));
+}
+
+TEST(Bds5Motion, IncrementalMoveLandsOnItsEnd) { // examples/bds5/05, L2385-2401
+    TestDrive t;
+    t.type("EN\r");
+    t.type("ACC=1000\r");
+    t.type("DEC=1000\r");
+    EXPECT_EQ(t.type("MI 4000 100\r"), "MI 4000 100\r\n-->");
+    EXPECT_EQ(value(t, "SEG"), "1");
+    t.wait(100ms);
+    EXPECT_EQ(value(t, "VCMD"), "100") << "100 RPM reached after 0.1 s at 1000 RPM/s";
+    EXPECT_EQ(value(t, "SEG"), "2");
+    EXPECT_EQ(value(t, "PFNL"), "4000");
+    t.wait(1000ms);
+    EXPECT_EQ(value(t, "PFB"), "4000");
+    EXPECT_EQ(value(t, "SEG"), "0");
+    t.type("MI -8000\r");
+    t.wait(100ms);
+    EXPECT_EQ(value(t, "VCMD"), "-1") << "VDEFAULT: 1 RPM";
+}
+
+TEST(Bds5Motion, TypedThirdMoveIsErr30) { // L7242
+    TestDrive t;
+    t.type("EN\r");
+    t.type("MI 100000 10\r");
+    t.type("MI 100000 10\r");
+    EXPECT_NE(t.type("MI 100000 10\r").find("\aERR 30"), std::string::npos);
+}
+
+TEST(Bds5Motion, VelocityOutOfBoundsIsErr33) {
+    TestDrive t;
+    t.type("EN\r");
+    EXPECT_NE(t.type("J 8000\r").find("\aERR 33"), std::string::npos) << "VMAX is 7500 RPM";
+    EXPECT_NE(t.type("MA 100 -5\r").find("\aERR 33"), std::string::npos);
+}
+
+TEST(Bds5Motion, StopDeceleratesAtAmaxAndJogZeroAtDec) {
+    TestDrive t;
+    t.type("EN\r");
+    t.type("ACC=10000\r");
+    t.type("DEC=1000\r");
+    t.type("J 1000\r");
+    t.wait(200ms);
+    t.type("J 0\r");
+    t.wait(500ms);
+    EXPECT_NE(value(t, "VCMD"), "0") << "J 0 decelerates at DEC: a second from 1000 RPM";
+    t.type("S\r");
+    t.wait(50ms);
+    EXPECT_EQ(value(t, "VCMD"), "0") << "S uses AMAX";
+}
+
+TEST(Bds5Motion, ProgramIdlesOnAFullBufferWhileBackgroundRuns) { // examples/bds5/41, L4645-4687
+    TestDrive t;
+    t.download({"1$", "EN", "MI 1000 10", "P \"FIRST MOVE PROCESSED\"", "MI 1000 10", "P \"SECOND MOVE PROCESSED\"",
+                "MI 1000 10", "P \"THIRD MOVE PROCESSED\"", "B", "BACKGROUND$", "P \"UPPER TASK IDLED\"", "D 250",
+                "END"});
+    t.type("ACC=1000\r");
+    t.type("DEC=1000\r");
+    const std::string out = t.type("RUN 1\r", 4000ms);
+    const auto second = out.find("SECOND MOVE PROCESSED");
+    const auto third = out.find("THIRD MOVE PROCESSED");
+    ASSERT_NE(second, std::string::npos) << out;
+    ASSERT_NE(third, std::string::npos) << out;
+    EXPECT_GE(count(out.substr(second, third - second), "UPPER TASK IDLED"), 5) << out;
+}
+
+TEST(Bds5Motion, WaitZeroHoldsUntilMotionStops) { // examples/bds5/42, L4700-4750
+    TestDrive t;
+    t.download({"1$", "EN", "MI 2000 100", "P \"MOVE PROCESSED\"", "W 0", "P \"ALL MOTION STOPPED\"", "P PFB", "B"});
+    t.type("ACC=1000\r");
+    t.type("DEC=1000\r");
+    const std::string early = t.type("RUN 1\r", 150ms); // the move takes about 0.4 s
+    EXPECT_NE(early.find("MOVE PROCESSED"), std::string::npos);
+    EXPECT_EQ(early.find("ALL MOTION STOPPED"), std::string::npos);
+    const std::string late = t.wait(2000ms);
+    EXPECT_EQ(late, "ALL MOTION STOPPED\r\n        2000\r\n-->");
+}
+
+TEST(Bds5Motion, WaitForSegmentTwo) {
+    TestDrive t;
+    t.download({"1$", "EN", "MI 5000 100", "W 2", "P SEG[1] VCMD[4]", "B"});
+    t.type("ACC=1000\r");
+    EXPECT_NE(t.type("RUN 1\r", 300ms).find("2 100\r\n-->"), std::string::npos);
+}
+
+TEST(Bds5Motion, NormalizeOnlyAtRest) {
+    TestDrive t;
+    t.type("EN\r");
+    t.type("NORM 500\r");
+    EXPECT_EQ(value(t, "PFB"), "500");
+    t.type("J 10\r");
+    EXPECT_NE(t.type("NORM 0\r").find("\aERR 57"), std::string::npos);
+}
