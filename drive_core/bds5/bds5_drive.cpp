@@ -35,6 +35,7 @@ void Bds5Drive::powerUp() {
     for (const char* name : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"}) inputs.emplace_back(name, 0);
     for (auto& [name, value] : inputs) value = m_state.variables.read(name).value_or(0);
     m_state.variables.powerUp();
+    m_state.recorder.clear(); // the RECORD buffer is cleared at power-up (Table 3.2 notes)
     if (m_poweredBefore)
         for (const auto& [name, value] : inputs) m_state.variables.set(name, value);
     m_poweredBefore = true;
@@ -96,6 +97,7 @@ void Bds5Drive::step(Microseconds dt) {
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
     m_state.motion.step(dt, m_state.variables);
+    m_state.recorder.step(dt, m_state.variables);
     if (m_executor.running()) runProgram();
     m_uart.advance(dt);
     m_state.variables.set("SERIAL", m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)

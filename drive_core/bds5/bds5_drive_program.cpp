@@ -105,6 +105,10 @@ void Bds5Drive::runProgram() {
 
 // Before each program line: the trace line, or single-step's stop before it (L5637-5712).
 bool Bds5Drive::beforeLine(TaskLevel level, int line, std::string& out) {
+    if (m_state.traceRecording) { // v3 real-time trace: the newest 100 lines (buffer size chosen)
+        m_state.traceBuffer.push_back({line, tracePrefix(level), m_state.program.line(line)});
+        if (m_state.traceBuffer.size() > 100) m_state.traceBuffer.pop_front();
+    }
     if (m_mode != Bds5DriveMode::Running) return true; // monitor mode: no display (chosen)
     if (switchOn("SS", false)) { // with TRC also on, single-step wins (L1320)
         if (std::exchange(m_stepGranted, false)) return true;

@@ -48,6 +48,7 @@ void Bds5Executor::start(std::optional<int> mainLine, Microseconds now) {
     stop();
     m_multitasking = true;
     m_cpu = now;
+    m_cycleLast = m_state.variables.read("CYCLE").value_or(0) != 0;
     if (mainLine) launch(TaskLevel::Main, *mainLine);
     pollAlarms(true);
 }
@@ -106,6 +107,19 @@ void Bds5Executor::pollAlarms(bool atEnable) {
     }
 }
 
+// AUTO$ starts on a rising CYCLE edge with MANUAL off; MANUAL$ runs, again and again, while the MANUAL
+// input is on — both only when no main-level routine runs (L4960-4997; "MANUAL on" chosen, see §4.12).
+void Bds5Executor::pollAutoManual() {
+    const bool cycle = m_state.variables.read("CYCLE").value_or(0) != 0;
+    const bool rising = cycle && !m_cycleLast;
+    m_cycleLast = cycle;
+    if (task(TaskLevel::Main).active) return;
+    const bool manual = m_state.variables.read("MANUAL").value_or(0) != 0;
+    const auto label = manual ? DedicatedLabel::Manual : DedicatedLabel::Auto;
+    const auto line = m_state.program.dedicatedLine(label);
+    if (line && (manual || rising)) launch(TaskLevel::Main, *line + 1);
+}
+
 bool Bds5Executor::idle(const Task& t) const {
     if (!t.active) return true;
     if (t.waitPrinter && printerBlocked()) return true;
@@ -130,7 +144,10 @@ std::optional<Microseconds> Bds5Executor::nextWake() const {
 ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optional<Bds5Error>& error) {
     if (!m_multitasking) return ProgramStop::Break;
     for (int n = 0; m_multitasking && !m_paused && m_cpu < now && n < kMaxLinesPerAdvance; ++n) {
-        if (!m_errorHandling) pollAlarms(false);
+        if (!m_errorHandling) {
+            pollAlarms(false);
+            pollAutoManual();
+        }
         // MULTI OFF disables alarm C, variable input and background (not A/B) (L4569-4577).
         const bool multi = m_state.variables.read("MULTI").value_or(1) != 0;
         std::optional<TaskLevel> pick;

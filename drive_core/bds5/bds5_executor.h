@@ -82,6 +82,7 @@ private:
     Task& task(TaskLevel level) { return m_tasks[std::size_t(level)]; }
     void launch(TaskLevel level, int line);
     void pollAlarms(bool atEnable);
+    void pollAutoManual();
     bool idle(const Task& t) const;
     bool hasDedicatedTasks() const;
     std::optional<Microseconds> nextWake() const;
@@ -97,6 +98,7 @@ private:
     Bds5Interpreter& m_interpreter;
     std::array<Task, kTaskCount> m_tasks;
     std::array<std::optional<bool>, 3> m_alarmLast; // last sampled state of each alarm's switch
+    bool m_cycleLast = false;                        // the CYCLE input, for AUTO$'s rising edge
     bool m_multitasking = false;
     bool m_errorHandling = false; // ERROR$ runs: every other task is suspended (L4956-4958)
     bool m_paused = false;

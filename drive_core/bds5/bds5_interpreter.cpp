@@ -147,6 +147,15 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         else m_state.motion.halt();
         return {};
     }
+    if (word == "RECORD" || word == "PLAY") return record(entries, out);
+    if (word == "RAND") return random(entries);
+    if (word == "TRECORD" || word == "TPLAY") return realTimeTrace(entries, out);
+    if (word == "MOTOR") { // the motor/drive combination (factory use, L6923-6927); text chosen
+        if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
+        out += "MOTOR: SERVODESK REFERENCE MOTOR, 12-BIT R/D, VMAX " +
+               std::to_string(readValue("VMAX").value_or(0)) + " RPM\r\n";
+        return {};
+    }
     if (word == "J" || word == "MA" || word == "MI" || word == "W" || word == "NORM" || word == "ZPE")
         return motionCommand(entries, context);
     if (word == "CLEARX") { // v3: zero X1-X750 and XS1-XS50 (L9308)
@@ -208,6 +217,97 @@ Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const Exe
     // A full buffer idles a program before the command (L4637-4641); typed, it is ERR 30 (L7242).
     if (e == 30 && context.origin == Origin::Program) return {std::nullopt, Flow::WaitMotion};
     if (e) return {Bds5Error{e, joined(entries), 0}};
+    return {};
+}
+
+// RECORD <n> <ms> <v1> [v2 v3 v4] | PLAY (L6370-6397, L7011-7037).
+Outcome Bds5Interpreter::record(std::span<const Entry> entries, std::string& out) {
+    const auto args = entries.subspan(1);
+    if (entries.front().text == "PLAY") {
+        if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
+        const auto listing = m_state.recorder.play();
+        if (!listing) return {Bds5Error{65, "PLAY", 0}}; // RECORD NOT READY
+        out += *listing;
+        return {};
+    }
+    if (args.size() < 3 || args.size() > 6) return {Bds5Error{82, joined(entries), 0}};
+    if (m_state.variables.read("EXTDX").value_or(0)) return {Bds5Error{63, joined(entries), 0}}; // v3: no RECORD
+    const auto reader = [this](auto n) { return readValue(n); };
+    const ExpressionResult n = evaluate(args[0].text, reader);
+    if (n.error) return {Bds5Error{n.error, args[0].text, 0}};
+    const ExpressionResult t = evaluate(args[1].text, reader);
+    if (t.error) return {Bds5Error{t.error, args[1].text, 0}};
+    std::vector<std::string> names;
+    for (const Entry& e : args.subspan(2)) names.push_back(e.text);
+    std::string bad;
+    if (const int e = m_state.recorder.start(n.value, t.value, names, bad))
+        return {Bds5Error{e, bad.empty() ? joined(entries) : bad, 0}};
+    return {};
+}
+
+// RAND <seed> | RAND Xn <e1> <e2> (v3, L9310): seed 0-31000; a number between the bounds, |e1-e2| <= 31000.
+// The generator is not in the seed; chosen: a 32-bit linear congruential generator (deterministic).
+Outcome Bds5Interpreter::random(std::span<const Entry> entries) {
+    const auto args = entries.subspan(1);
+    const auto reader = [this](auto n) { return readValue(n); };
+    if (args.size() == 1) {
+        const ExpressionResult seed = evaluate(args[0].text, reader);
+        if (seed.error) return {Bds5Error{seed.error, args[0].text, 0}};
+        if (seed.value < 0 || seed.value > 31000) return {Bds5Error{83, args[0].text, 0}};
+        m_state.randomState = std::uint32_t(seed.value) * 2654435761u + 1;
+        return {};
+    }
+    if (args.size() != 3) return {Bds5Error{82, joined(entries), 0}};
+    const auto target = cat::findVariable(args[0].text);
+    if (!target || target->info->name != "X") return {Bds5Error{83, args[0].text, 0}};
+    const ExpressionResult a = evaluate(args[1].text, reader);
+    if (a.error) return {Bds5Error{a.error, args[1].text, 0}};
+    const ExpressionResult b = evaluate(args[2].text, reader);
+    if (b.error) return {Bds5Error{b.error, args[2].text, 0}};
+    const std::int64_t lo = std::min(a.value, b.value);
+    const std::int64_t hi = std::max(a.value, b.value);
+    if (hi - lo > 31000) return {Bds5Error{83, args[2].text, 0}};
+    m_state.randomState = m_state.randomState * 1664525u + 1013904223u;
+    const std::int64_t value = lo + std::int64_t((m_state.randomState >> 8) % std::uint32_t(hi - lo + 1));
+    m_state.variables.set(*target, std::int32_t(value));
+    return {};
+}
+
+// TRECORD START|STOP|CONTINUE and TPLAY [NEWEST n | OLDEST n | n | l1 l2] (v3, L9317-9319): lines
+// "#<n> LINE <program line> <task prefix> <command>", numbered oldest first (chosen where the OCR is unclear).
+Outcome Bds5Interpreter::realTimeTrace(std::span<const Entry> entries, std::string& out) {
+    const auto args = entries.subspan(1);
+    if (m_state.variables.read("EXTDX").value_or(0)) return {Bds5Error{63, joined(entries), 0}};
+    if (entries.front().text == "TRECORD") {
+        if (args.size() != 1) return {Bds5Error{82, joined(entries), 0}};
+        const std::string& what = args[0].text;
+        if (what == "START") m_state.traceBuffer.clear();
+        else if (what != "STOP" && what != "CONTINUE") return {Bds5Error{83, what, 0}};
+        m_state.traceRecording = what != "STOP";
+        return {};
+    }
+    const int size = int(m_state.traceBuffer.size());
+    int first = 1;
+    int last = size;
+    std::vector<std::int32_t> numbers;
+    const std::size_t numberAt = args.size() == 2 && (args[0].text == "NEWEST" || args[0].text == "OLDEST") ? 1 : 0;
+    for (std::size_t i = numberAt; i < args.size(); ++i) {
+        const auto v = parseConstant(args[i].text);
+        if (!v || *v < 0) return {Bds5Error{83, args[i].text, 0}};
+        numbers.push_back(*v);
+    }
+    if (args.size() > 2) return {Bds5Error{82, joined(entries), 0}};
+    if (numberAt == 1 && args[0].text == "NEWEST") first = std::max(1, size - numbers[0] + 1);
+    else if (numberAt == 1) last = std::min(size, int(numbers[0]));
+    else if (numbers.size() == 1) first = last = numbers[0];
+    else if (numbers.size() == 2) {
+        first = numbers[0];
+        last = std::min(size, int(numbers[1]));
+    }
+    for (int n = std::max(first, 1); n <= last && n <= size; ++n) {
+        const auto& e = m_state.traceBuffer[std::size_t(n - 1)];
+        out += "#" + std::to_string(n) + " LINE " + std::to_string(e.line) + " " + e.prefix + " " + e.text + "\r\n";
+    }
     return {};
 }
 

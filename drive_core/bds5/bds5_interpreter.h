@@ -6,6 +6,7 @@
 #include "bds5_error.h"
 #include "bds5_lexer.h"
 #include "bds5_motion.h"
+#include "bds5_recorder.h"
 #include "bds5_program.h"
 #include "bds5_variable_store.h"
 
@@ -30,6 +31,16 @@ struct Bds5State {
     Bds5VariableStore variables;
     Bds5Program program;
     Bds5Motion motion;
+    Bds5Recorder recorder;
+    std::uint32_t randomState = 1; // RAND's generator (v3 L9310)
+    // v3 real-time trace (TRECORD/TPLAY, L9317-9319): the last lines executed, oldest first.
+    struct TraceEntry {
+        int line;
+        std::string prefix; // the task's trace prefix, "t..", "tA." ...
+        std::string text;
+    };
+    std::deque<TraceEntry> traceBuffer;
+    bool traceRecording = false;
     std::deque<int> errorHistory; // ERR HIST, newest first, at most 20 entries (L6110-6148)
     bool enabled = false;         // drive enabled (EN) / inhibited (DIS, K)
     bool serialBusy = false;      // the UART is still sending: printing commands idle before running
@@ -106,6 +117,9 @@ private:
     std::optional<bool> condition(std::span<const Entry> entries, std::optional<Bds5Error>& error) const;
     std::optional<std::int32_t> readValue(std::string_view name) const;
     Outcome motionCommand(std::span<const Entry> entries, const ExecContext& context);
+    Outcome record(std::span<const Entry> entries, std::string& out);
+    Outcome random(std::span<const Entry> entries);
+    Outcome realTimeTrace(std::span<const Entry> entries, std::string& out);
     // Evaluates an entry and converts it from user to basic units; error set on failure.
     std::optional<std::int64_t> basicValue(const Entry& entry, catalog::bds5::UnitClass unit,
                                            std::optional<Bds5Error>& error) const;
