@@ -143,7 +143,10 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word == "EN" || word == "DIS") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
         m_state.enabled = word == "EN";
-        if (m_state.enabled) m_state.variables.set("FAULT", 0); // EN clears the FAULT latch (L2111-2115)
+        if (m_state.enabled) { // EN clears the FAULT latch and the macro memory (L2111-2115, L2522)
+            m_state.variables.set("FAULT", 0);
+            m_state.motion.resetMacro();
+        }
         else m_state.motion.halt();
         return {};
     }
@@ -156,8 +159,9 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
                std::to_string(readValue("VMAX").value_or(0)) + " RPM\r\n";
         return {};
     }
-    if (word == "J" || word == "MA" || word == "MI" || word == "W" || word == "NORM" || word == "ZPE")
-        return motionCommand(entries, context);
+    for (const char* motionWord : {"J", "MA", "MI", "W", "NORM", "ZPE", "JT", "JF", "MRD", "CONTINUE", "MCA", "MCI",
+                                   "MCD", "MCGO"})
+        if (word == motionWord) return motionCommand(entries, context);
     if (word == "CLEARX") { // v3: zero X1-X750 and XS1-XS50 (L9308)
         for (int i = 1; i <= 250; ++i) m_state.variables.set("X" + std::to_string(i), 0);
         for (int i = 1; i <= 50; ++i) m_state.variables.set("XS" + std::to_string(i), 0);
@@ -180,16 +184,70 @@ std::optional<std::int64_t> Bds5Interpreter::basicValue(const Entry& entry, cat:
     return basic;
 }
 
-// J v | MA p [v] | MI d [v] | W n | NORM p | ZPE (L2277-2494, L4513-4549, App. C).
+// J v | MA p [v] | MI d [v] | JT p v | JF p v | MRD p v [CW|CCW] | MCA p [v [v]] | MCI d [v [v]] | MCD ms |
+// MCGO | CONTINUE [ms] | W n | NORM p | ZPE (L2277-3158, L4513-4549, App. C).
 Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const ExecContext& context) {
     const std::string& word = entries.front().text;
     const auto args = entries.subspan(1);
-    const bool twoArgs = word == "MA" || word == "MI";
-    const std::size_t most = twoArgs ? 2 : word == "ZPE" ? 0 : 1;
-    const std::size_t least = word == "ZPE" ? 0 : 1;
-    if (args.size() < least || args.size() > most) return {Bds5Error{82, joined(entries), 0}};
+    struct Arity {
+        const char* word;
+        std::size_t least, most;
+    };
+    static constexpr Arity kArity[] = {{"J", 1, 1},   {"MA", 1, 2},   {"MI", 1, 2},  {"JT", 2, 2},
+                                       {"JF", 2, 2},  {"MRD", 2, 3},  {"MCA", 1, 3}, {"MCI", 1, 3},
+                                       {"MCD", 1, 1}, {"MCGO", 0, 0}, {"W", 1, 1},   {"NORM", 1, 1},
+                                       {"ZPE", 0, 0}, {"CONTINUE", 0, 1}};
+    for (const Arity& a : kArity)
+        if (word == a.word && (args.size() < a.least || args.size() > a.most))
+            return {Bds5Error{82, joined(entries), 0}};
     std::optional<Bds5Error> error;
+    const auto fail = [&](int e) { return Outcome{Bds5Error{e, joined(entries), 0}}; };
     if (word == "ZPE") return {}; // PCMD := PFB; with the ideal follower they are already equal
+    if (word == "MCGO" || word == "CONTINUE") {
+        if (word == "CONTINUE" && !args.empty()) { // averaging time 1..1000 ms (L6620-6631)
+            const ExpressionResult r = evaluate(args[0].text, [this](auto n) { return readValue(n); });
+            if (r.error) return {Bds5Error{r.error, args[0].text, 0}};
+            if (r.value < 1 || r.value > 1000) return {Bds5Error{83, args[0].text, 0}};
+        }
+        const int e = word == "CONTINUE" ? m_state.motion.keepMoving(m_state.enabled)
+                                         : m_state.motion.macroGo(m_state.variables, m_state.enabled);
+        if (e == 30 && context.origin == Origin::Program) return {std::nullopt, Flow::WaitMotion};
+        if (e) return fail(e);
+        return {};
+    }
+    if (word == "MCD") {
+        const ExpressionResult r = evaluate(args[0].text, [this](auto n) { return readValue(n); });
+        if (r.error) return {Bds5Error{r.error, args[0].text, 0}};
+        if (const int e = m_state.motion.macroDwell(r.value)) return fail(e);
+        return {};
+    }
+    if (word == "JT" || word == "JF" || word == "MRD" || word == "MCA" || word == "MCI") {
+        const auto first = basicValue(args[0], cat::UnitClass::Position, error);
+        if (!first) return {error};
+        std::optional<std::int64_t> v1;
+        std::optional<std::int64_t> v2;
+        int direction = 0;
+        if (args.size() >= 2) {
+            v1 = basicValue(args[1], cat::UnitClass::Velocity, error);
+            if (!v1) return {error};
+        }
+        if (args.size() == 3 && word == "MRD") {
+            if (args[2].text != "CW" && args[2].text != "CCW") return {Bds5Error{83, args[2].text, 0}};
+            direction = args[2].text == "CW" ? 1 : -1;
+        } else if (args.size() == 3) {
+            v2 = basicValue(args[2], cat::UnitClass::Velocity, error);
+            if (!v2) return {error};
+        }
+        int e = 0;
+        if (word == "JT" || word == "JF")
+            e = m_state.motion.jogTo(m_state.variables, m_state.enabled, *first, *v1, word == "JT");
+        else if (word == "MRD")
+            e = m_state.motion.moveRd(m_state.variables, m_state.enabled, *first, *v1, direction);
+        else
+            e = m_state.motion.macroSection(m_state.variables, *first, word == "MCA", v1, v2);
+        if (e) return fail(e);
+        return {};
+    }
     if (word == "W") {
         const ExpressionResult r = evaluate(args[0].text, [this](auto n) { return readValue(n); });
         if (r.error) return {Bds5Error{r.error, args[0].text, 0}};

@@ -4,6 +4,7 @@
 #include "drive_core/catalog/bds5_catalog.h"
 
 #include <cmath>
+#include <limits>
 
 namespace drive_core::bds5 {
 
@@ -55,6 +56,93 @@ int Bds5Motion::move(const Bds5VariableStore& vars, bool enabled, std::int64_t t
     if (m_profile.full()) return 30;
     const double end = incremental ? std::round(m_profile.finalPosition()) + double(target) : double(target);
     return m_profile.push({motion::MoveKind::Position, end, cps, acc, dec}) ? 0 : 30;
+}
+
+int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t position, std::int64_t velocity,
+                      bool to) {
+    if (const int e = checkCanMove(vars, enabled)) return e;
+    if (std::llabs(velocity) > std::int64_t(basic(vars, "VMAX"))) return 33;
+    const double v0 = m_profile.velocity();
+    if (v0 == 0) return 41; // MOVE NEEDS MOTION
+    const double direction = v0 < 0 ? -1.0 : 1.0;
+    const double v1 = double(velocity) / kBasicPerCountPerSecond;
+    if (v1 * direction < 0) return 40; // CHANGED DIRECTION
+    const double rate = std::abs(v1) > std::abs(v0) ? this->rate(vars, "ACC") : this->rate(vars, "DEC");
+    const double rampTime = std::abs(v1 - v0) / rate;
+    const double rampDistance = (v0 + v1) / 2 * rampTime;
+    const double ahead = double(position) - m_profile.position();
+    const double hold = to ? ahead - rampDistance : ahead; // JT: the ramp ends there; JF: it begins there
+    if (hold * direction < 0) return 42;                    // MOVE w/o TIME: already passed
+    if (rampTime > kMaxRampSeconds) return 32;
+    std::vector<motion::Segment> segments{{hold / v0, 0, 1}, {rampTime, v1 > v0 ? rate : -rate, 2}};
+    if (v1 != 0) segments.push_back({std::numeric_limits<double>::infinity(), 0, 3});
+    const std::optional<double> end =
+        v1 == 0 ? std::optional<double>(m_profile.position() + hold + rampDistance) : std::nullopt;
+    m_profile.start(std::move(segments), end);
+    return 0;
+}
+
+int Bds5Motion::moveRd(const Bds5VariableStore& vars, bool enabled, std::int64_t rdPosition, std::int64_t velocity,
+                       int direction) {
+    if (const int e = checkCanMove(vars, enabled)) return e;
+    if (m_profile.moving()) return 31; // TOO MANY MRD MOVES: needs an empty buffer
+    if (velocity <= 0 || velocity > std::int64_t(basic(vars, "VMAX"))) return 33;
+    const std::int64_t perRev = 4096; // the reference 12-bit R/D
+    if (rdPosition < 0 || rdPosition >= perRev) return 83;
+    const std::int64_t prd = ((std::llround(m_profile.position()) % perRev) + perRev) % perRev;
+    std::int64_t d = rdPosition - prd;
+    if (direction > 0 && d < 0) d += perRev;
+    else if (direction < 0 && d > 0) d -= perRev;
+    else if (direction == 0 && d > perRev / 2) d -= perRev;
+    else if (direction == 0 && d <= -perRev / 2) d += perRev;
+    const double cps = double(velocity) / kBasicPerCountPerSecond;
+    m_profile.push({motion::MoveKind::Position, m_profile.position() + double(d), cps, rate(vars, "ACC"),
+                    rate(vars, "DEC")});
+    return 0;
+}
+
+int Bds5Motion::keepMoving(bool enabled) {
+    if (!enabled) return 50;
+    m_profile.start({{std::numeric_limits<double>::infinity(), 0, 1}}, std::nullopt);
+    return 0;
+}
+
+int Bds5Motion::macroSection(const Bds5VariableStore& vars, std::int64_t positionOrDistance, bool absolute,
+                             std::optional<std::int64_t> first, std::optional<std::int64_t> second) {
+    if (m_macroId && m_profile.activeId() == m_macroId) return 48; // MCA/MCI RUNNING
+    if (!m_macro.open() || m_macro.segments().empty()) {
+        m_macro.reset();
+        m_macroStart = m_profile.finalPosition();
+    }
+    const auto speed = [](std::optional<std::int64_t> v) {
+        return v ? std::optional<double>(double(*v) / kBasicPerCountPerSecond) : std::nullopt;
+    };
+    if ((first && *first < 0) || (second && *second < 0)) return 83; // velocities are always positive
+    const double distance =
+        absolute ? double(positionOrDistance) - (m_macroStart + m_macro.definedDistance()) : double(positionOrDistance);
+    return m_macro.addSection(distance, speed(first), speed(second), rate(vars, "ACC"), rate(vars, "DEC"));
+}
+
+int Bds5Motion::macroDwell(std::int64_t ms) {
+    if (m_macroId && m_profile.activeId() == m_macroId) return 48;
+    if (ms < 0) return 83;
+    if (!m_macro.open() || m_macro.segments().empty()) {
+        m_macro.reset();
+        m_macroStart = m_profile.finalPosition();
+    }
+    return m_macro.addDwell(double(ms) / 1000);
+}
+
+int Bds5Motion::macroGo(const Bds5VariableStore& vars, bool enabled) {
+    if (const int e = checkCanMove(vars, enabled)) return e;
+    if (m_macro.open())
+        if (const int e = m_macro.close()) return e;
+    if (m_profile.jogging()) return 58;
+    if (m_profile.full()) return 30;
+    const auto id = m_profile.push(m_macro.segments(), m_macro.definedDistance());
+    if (!id) return 30;
+    m_macroId = *id;
+    return 0;
 }
 
 void Bds5Motion::stop(const Bds5VariableStore& vars) { m_profile.stop(rate(vars, "AMAX")); }

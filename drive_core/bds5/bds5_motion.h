@@ -4,6 +4,7 @@
 // Until the servo physics arrives (issue 4) the motor follows the command exactly: PFB = PCMD, PE = 0.
 #pragma once
 
+#include "bds5_macro.h"
 #include "bds5_variable_store.h"
 
 #include "drive_core/drive.h"
@@ -21,6 +22,22 @@ public:
     // Absolute (MA) or incremental from the last commanded end position (MI). 30: the buffer is full.
     int move(const Bds5VariableStore& vars, bool enabled, std::int64_t target, std::optional<std::int64_t> velocity,
              bool incremental);
+    // JT (to: true) / JF: hold the present speed, then change to `velocity` so that the change ends (JT) or
+    // begins (JF) at `position` (L2734-2800). 40 reversal, 41 at rest, 42 position passed or unreachable.
+    int jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t position, std::int64_t velocity, bool to);
+    // MRD: a move of the R/D reading (PRD) to rdPosition within one revolution, the short way unless
+    // direction is +1 (CW) or -1 (CCW); needs an empty buffer (ERR 31) (L2581-2613).
+    int moveRd(const Bds5VariableStore& vars, bool enabled, std::int64_t rdPosition, std::int64_t velocity,
+               int direction);
+    // CONTINUE: keep moving at the present speed (L3135-3158).
+    int keepMoving(bool enabled);
+    // Macro sections and MCGO (velocities in basic units, positive).
+    int macroSection(const Bds5VariableStore& vars, std::int64_t positionOrDistance, bool absolute,
+                     std::optional<std::int64_t> first, std::optional<std::int64_t> second);
+    int macroDwell(std::int64_t ms);
+    int macroGo(const Bds5VariableStore& vars, bool enabled);
+    void resetMacro() { m_macro.reset(); }
+
     // S, errors, ^X: decelerate at AMAX and cancel everything.
     void stop(const Bds5VariableStore& vars);
     // DIS, K, faults that disable: the motor coasts; the command follows it to rest at once.
@@ -40,6 +57,9 @@ private:
     double rate(const Bds5VariableStore& vars, const char* name) const; // ACC/DEC/AMAX in counts/s²
 
     motion::ProfileGenerator m_profile;
+    Bds5Macro m_macro;
+    double m_macroStart = 0; // PFNL when the macro's first section was defined (for MCA)
+    int m_macroId = 0;       // the profile id of the last MCGO (ERR 48 while it runs)
 };
 
 } // namespace drive_core::bds5

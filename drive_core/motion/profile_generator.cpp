@@ -63,6 +63,39 @@ int ProfileGenerator::jog(const MoveRequest& jog) {
     return m_nextId - 1;
 }
 
+int ProfileGenerator::start(std::vector<Segment> segments, std::optional<double> endPosition) {
+    m_pending.clear();
+    Motion m;
+    m.id = m_nextId++;
+    m.request.kind = endPosition ? MoveKind::Position : MoveKind::Jog;
+    m.request.target_counts = endPosition.value_or(0);
+    m.segments = std::move(segments);
+    m.planned = true;
+    m.segmentStartPosition = m_position;
+    m.segmentStartVelocity = m_velocity;
+    if (m.segments.empty()) {
+        m_active.reset();
+        if (endPosition) m_position = *endPosition;
+        m_velocity = 0;
+    } else {
+        m_active = std::move(m);
+    }
+    return m_nextId - 1;
+}
+
+std::optional<int> ProfileGenerator::push(std::vector<Segment> segments, double endOffset) {
+    if (full()) return std::nullopt;
+    Motion m;
+    m.id = m_nextId++;
+    m.request.kind = MoveKind::Position;
+    m.segments = std::move(segments);
+    m.planned = true;
+    m.endOffset = endOffset;
+    if (!m_active) begin(std::move(m));
+    else m_pending.push_back(std::move(m));
+    return m_nextId - 1;
+}
+
 void ProfileGenerator::stop(double decel_cps2) {
     m_pending.clear();
     if (!m_active || m_velocity == 0) {
@@ -81,10 +114,12 @@ void ProfileGenerator::stop(double decel_cps2) {
 void ProfileGenerator::setPosition(double counts) { m_position = counts; }
 
 void ProfileGenerator::begin(Motion motion) {
-    motion.segments = plan(m_position, motion.request);
+    if (motion.planned) motion.request.target_counts = m_position + motion.endOffset;
+    else motion.segments = plan(m_position, motion.request);
     motion.segmentStartPosition = m_position;
     motion.segmentStartVelocity = 0;
     if (motion.segments.empty()) { // nothing to do: the move is over as it starts
+        m_position = motion.request.target_counts;
         m_active.reset();
         return;
     }
@@ -132,8 +167,12 @@ double ProfileGenerator::acceleration() const {
 int ProfileGenerator::segment() const { return m_active ? m_active->segments[m_active->index].number : 0; }
 
 double ProfileGenerator::finalPosition() const {
-    if (!m_pending.empty() && m_pending.back().request.kind == MoveKind::Position)
-        return m_pending.back().request.target_counts;
+    if (!m_pending.empty()) { // pending moves are position moves; planned ones end relative to the one before
+        double end = m_active && m_active->request.kind == MoveKind::Position ? m_active->request.target_counts
+                                                                               : m_position;
+        for (const Motion& p : m_pending) end = p.planned ? end + p.endOffset : p.request.target_counts;
+        return end;
+    }
     if (m_active && m_active->request.kind == MoveKind::Position) return m_active->request.target_counts;
     return m_position;
 }

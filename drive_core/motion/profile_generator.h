@@ -37,6 +37,13 @@ public:
     std::optional<int> push(const MoveRequest& move);
     // Starts a jog at once from the present speed, cancelling whatever was commanded. Returns its id.
     int jog(const MoveRequest& jog);
+    // A profile given as segments, from the present position and speed, starting at once (JT, JF, CONTINUE).
+    // With endPosition it is a position move and lands exactly there; without, its last segment is
+    // endless (give it an infinite duration). Cancels whatever was commanded. Returns its id.
+    int start(std::vector<Segment> segments, std::optional<double> endPosition);
+    // A position move given as segments from rest, queued like push() (macro moves, MRD). The distance is
+    // endOffset from where the motion before it ends.
+    std::optional<int> push(std::vector<Segment> segments, double endOffset);
     // Decelerates to rest at decel_cps2 now and cancels every command (BDS5 S, errors).
     void stop(double decel_cps2);
     // Sets the commanded position without motion (NORM, ZPE); only meaningful at rest.
@@ -69,6 +76,8 @@ private:
         MoveRequest request;
         std::vector<Segment> segments;
         std::size_t index = 0;    // executing segment
+        bool planned = false;     // segments given: begin() must not plan a trapezoid
+        double endOffset = 0;     // planned position moves: the end relative to the start
         double elapsed_s = 0;     // time into that segment
         double segmentStartPosition = 0;
         double segmentStartVelocity = 0;

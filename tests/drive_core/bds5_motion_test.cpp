@@ -114,3 +114,80 @@ TEST(Bds5Motion, NormalizeOnlyAtRest) {
     t.type("J 10\r");
     EXPECT_NE(t.type("NORM 0\r").find("\aERR 57"), std::string::npos);
 }
+
+TEST(Bds5Macro, Example1ElevenThousandCountsInFiveSegments) { // L2534-2552
+    TestDrive t;
+    t.type("EN\r");
+    t.type("ACC=20000\r");
+    t.type("DEC=20000\r");
+    EXPECT_EQ(t.type("MCI 10000 1000 200\r"), "MCI 10000 1000 200\r\n-->");
+    EXPECT_EQ(t.type("MCI 1000 0\r"), "MCI 1000 0\r\n-->");
+    t.type("RECORD 1000 1 SEG\r");
+    EXPECT_EQ(t.type("MCGO\r"), "MCGO\r\n-->");
+    EXPECT_EQ(value(t, "PFNL"), "11000");
+    t.wait(1500ms);
+    EXPECT_EQ(value(t, "PFB"), "11000");
+    const std::string play = t.type("PLAY\r");
+    EXPECT_NE(play.find("           5\r\n"), std::string::npos) << "the fifth segment ran";
+    EXPECT_EQ(play.find("           6\r\n"), std::string::npos);
+    t.type("MCGO\r");
+    t.wait(1500ms);
+    EXPECT_EQ(value(t, "PFB"), "22000") << "every MCGO repeats the move";
+}
+
+TEST(Bds5Macro, Example2DwellsAndReturnsHome) { // L2569-2576
+    TestDrive t;
+    t.type("EN\r");
+    t.type("ACC=20000\r");
+    t.type("DEC=20000\r");
+    for (const char* line : {"MCA 10000 1000 200", "MCA 11000 0", "MCD 500", "MCA 0 1000 0", "MCGO"})
+        EXPECT_EQ(t.type(std::string(line) + "\r"), std::string(line) + "\r\n-->");
+    t.wait(500ms);
+    EXPECT_EQ(value(t, "PFB"), "11000") << "out in about 0.35 s, then the 0.5 s dwell";
+    EXPECT_EQ(value(t, "SEG"), "6") << "segment 6 is the dwell";
+    t.wait(3000ms);
+    EXPECT_EQ(value(t, "PFB"), "0");
+}
+
+TEST(Bds5Macro, ErrorsOfTheManual) { // L7260-7279
+    TestDrive t;
+    t.type("EN\r");
+    t.type("MCI 1000 100 50\r");
+    EXPECT_NE(t.type("MCGO\r").find("\aERR 43"), std::string::npos) << "last section not at rest";
+    EXPECT_NE(t.type("MCD 100\r").find("\aERR 44"), std::string::npos);
+    EXPECT_NE(t.type("MCI -100\r").find("\aERR 40"), std::string::npos) << "reversing at speed";
+    EXPECT_NE(t.type("MCI 1 1000 0\r").find("\aERR 42"), std::string::npos) << "too short for the speeds";
+    t.type("DIS\r");
+    t.type("EN\r"); // enabling resets the macro memory
+    EXPECT_NE(t.type("MCI 100\r").find("\aERR 41"), std::string::npos) << "no speed from rest";
+}
+
+TEST(Bds5JogTo, ChangesSpeedSoTheRampEndsAtThePosition) { // L2734-2800
+    TestDrive t;
+    t.type("EN\r");
+    t.type("ACC=10000\r");
+    t.type("DEC=10000\r");
+    EXPECT_NE(t.type("JT 1000 0\r").find("\aERR 41"), std::string::npos) << "JT needs motion";
+    t.type("J 100\r");
+    t.wait(50ms);
+    EXPECT_EQ(t.type("JT 20000 0\r"), "JT 20000 0\r\n-->");
+    t.wait(4000ms);
+    EXPECT_EQ(value(t, "PFB"), "20000");
+    EXPECT_EQ(value(t, "VCMD"), "0");
+    t.type("J 100\r");
+    t.wait(50ms);
+    EXPECT_NE(t.type("JT 0 0\r").find("\aERR 42"), std::string::npos) << "already passed";
+    EXPECT_NE(t.type("JF 99999 -10\r").find("\aERR 40"), std::string::npos);
+}
+
+TEST(Bds5Mrd, MovesTheShortWayWithinARevolution) { // L2581-2613
+    TestDrive t;
+    t.type("EN\r");
+    t.type("NORM 4000\r");
+    t.type("MRD 100 100\r");
+    t.wait(500ms);
+    EXPECT_EQ(value(t, "PFB"), "4196") << "4000 is R/D 4000: forward 196 to 100";
+    t.type("MRD 4000 100 CW\r");
+    t.wait(2000ms);
+    EXPECT_EQ(value(t, "PFB"), "8096");
+}

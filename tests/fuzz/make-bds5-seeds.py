@@ -97,18 +97,49 @@ SEEDS = {
     + fault(17) + ms(5) + typed("P X1") + typed("") + fault(0) + fault(255) + ESC + ms(5),
     "sub-millisecond": typed("TMR1=5") + micro(200) * 20 + typed("P TMR1") + micro(0) * 10 + micro(255) * 10
     + typed("P TMR1"),
+    # Programs that print as fast as the line lets them: each print waits for the previous one (L4637).
+    "print-loop": download(["1$", "P X1 \" \" X2[H]", "X1=X1+1", "? X1 LT 50 GOTO 1", "2$", "TIL X2 GE 100 X2=X2+1",
+                            "ERR 83", "X1=0", "GOTO 1"]) + typed("RUN 1", 50) + tens(200) + ESC + tens(20),
     "monitor": download(["1$", "X1=X1+1", "D 10", "GOTO 1"]) + typed("RUN 1") + ESC + ms(5) + typed("P X1")
     + typed("X2=1") + typed("ED") + typed(">BDS") + typed("RUN 1") + typed("B") + ms(5) + typed("RUN 1") + ESC
     + ms(5) + typed("K") + typed("RUN 1") + ESC + ms(5) + typed("S"),
 }
 
 
-def main():
-    os.makedirs(OUT, exist_ok=True)
-    for name, data in SEEDS.items():
-        with open(os.path.join(OUT, "seed-" + name), "wb") as f:
+# Too slow to fuzz from (every mutant would carry megabytes): replayed by CTest only, from corpus/bds5-long.
+LONG = {
+    # 10 MB without a CR (issue 3): echo up to 80 characters, then a BEL for every byte; nothing else grows.
+    "10mb-without-cr": (b"A" * 64 + flood(256)) * 640 + ms(10) + b"\r" + ms(10) + typed("P \"STILL HERE\""),
+    "1mb-of-nul-and-bit7": (bytes([0, 0x80, 0xC1, 0xF7]) * 16 + flood(256)) * 64 + ms(10) + typed("P \"STILL HERE\""),
+}
+
+# Reproducers of findings in files this fuzzer's owner may not change (open/bds5/README.md): the replay
+# test does not run them until they are fixed and moved to corpus/bds5.
+OPEN = {
+    # BACKGROUND$ as the last line: the task runs off the end at no cost and restarts at once, so every
+    # step() spins kMaxLinesPerAdvance (100,000) times (bds5_executor.cpp).
+    "background-last-line-spins": download(["BACKGROUND$"]) + typed("RUN") + tens(100),
+    # Lines that print without waiting for the line (L4637): ERR HIST / ERR n, and P after TIL or ?.
+    "err-hist-loop-outruns-line": download(["1$", "ERR HIST", "GOTO 1"]) + typed("RUN 1") + tens(256) + tens(256),
+    "til-print-outruns-line": download(["1$", "TIL X1 EQ 1 P \"TIL PRINTS\""]) + typed("RUN 1") + tens(256)
+    + tens(256),
+    "quick-if-print-outruns-line": download(["1$", "? 1 EQ 1 P \"QUICK IF PRINTS\"", "GOTO 1"]) + typed("RUN 1")
+    + tens(256) + tens(256),
+}
+
+
+def write(directory, prefix, seeds):
+    os.makedirs(directory, exist_ok=True)
+    for name, data in seeds.items():
+        with open(os.path.join(directory, prefix + name), "wb") as f:
             f.write(data)
-    print(f"wrote {len(SEEDS)} seeds to {OUT}")
+    print(f"wrote {len(seeds)} files to {directory}")
+
+
+def main():
+    write(OUT, "seed-", SEEDS)
+    write(OUT + "-long", "seed-", LONG)
+    write(os.path.join(HERE, "open", "bds5"), "crash-", OPEN)
 
 
 if __name__ == "__main__":
