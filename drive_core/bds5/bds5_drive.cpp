@@ -29,6 +29,9 @@ Bds5Drive::Bds5Drive() {
 }
 
 void Bds5Drive::powerUp() {
+    // Power lost in the middle of a change to program memory (editor, >BDS) leaves it corrupt (L3712).
+    if (m_powered && (m_mode == Bds5DriveMode::Editor || (m_mode == Bds5DriveMode::ProgramLoad && m_loadStarted)))
+        m_state.program.setCorrupt(true);
     // Inputs are wires, not memory: a power cycle does not change what they read.
     std::vector<std::pair<std::string, std::int32_t>> inputs;
     for (int i = 1; i <= kInputCount; ++i) inputs.emplace_back("I" + std::to_string(i), 0);
@@ -72,6 +75,11 @@ void Bds5Drive::establishCommunications() {
         transmit(kCrLf);
         transmit(kSignOn);
         transmit(kCrLf);
+    }
+    if (m_state.program.corrupt()) { // reported at power-up; POWER-UP$ does not run (L7513)
+        logError(m_state, 202);
+        sendError(Bds5Error{202, {}, 0}, "");
+        return sendPrompt();
     }
     if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::PowerUp);
         line && !m_state.program.check()) {
@@ -338,6 +346,7 @@ void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
 void Bds5Drive::loadLine(std::string line) {
     if (!m_loadStarted) { // program memory is erased on the first CR-terminated line (L9957)
         m_state.program.clear();
+        m_state.program.setCorrupt(false); // >BDS resets "USER PROGRAM CORRUPT" and keeps the password
         m_loadStarted = true;
     }
     if (!m_state.program.append(std::move(line))) {

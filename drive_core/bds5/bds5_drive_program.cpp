@@ -59,7 +59,12 @@ std::optional<std::int64_t> parseAnswer(std::string text, int decimals) {
 } // namespace
 
 void Bds5Drive::runProgram(int label) {
-    // RUN checks the program before it starts (L3746): labels used twice, labels after ERROR$.
+    // RUN checks the program before it starts (L3746): corruption, labels used twice, labels after ERROR$.
+    if (m_state.program.corrupt()) {
+        logError(m_state, 202);
+        sendError(Bds5Error{202, "RUN", 0}, kErrorPreamble);
+        return sendPrompt();
+    }
     if (const auto problem = m_state.program.check()) {
         logError(m_state, problem->code);
         sendError(*problem, kErrorPreamble);

@@ -38,6 +38,10 @@ public:
     // The editor password (PASS, up to six characters; empty = none). NEW clears it; >BDS keeps it.
     const std::string& password() const { return m_password; }
     void setPassword(std::string password) { m_password = std::move(password); }
+    // "USER PROGRAM CORRUPT" (ERR 202): power was lost while the program was being changed. RUN refuses the
+    // program until NEW or >BDS clears it (L3712, L3746, L7513).
+    bool corrupt() const { return m_corrupt; }
+    void setCorrupt(bool corrupt) { m_corrupt = corrupt; }
 
     std::size_t sizeChars() const { return m_sizeChars; }
     int lineCount() const { return int(m_lines.size()); }
@@ -66,6 +70,7 @@ private:
     std::vector<std::string> m_lines;
     std::size_t m_sizeChars = 0;
     std::string m_password;
+    bool m_corrupt = false;
     // Derived on demand after a change.
     mutable bool m_indexed = false;
     mutable std::vector<LexedLine> m_lexed;

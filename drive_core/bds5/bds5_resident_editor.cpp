@@ -111,10 +111,10 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::command(const std::string& text) {
             (kProgramCapacityChars - m_program.sizeChars()) * 100 / kProgramCapacityChars;
         return toCommand(std::to_string(left) + " % LEFT\r\n");
     }
-    if (word ==
-        "NEW") { // clears the program and the password (L3712, L3718-3720); chosen: no confirmation asked
+    if (word == "NEW") { // clears program, password and corruption (L3712, L3718-3720); chosen: no confirmation
         m_program.clear();
         m_program.setPassword({});
+        m_program.setCorrupt(false);
         goTo(1);
         return toCommand();
     }

@@ -235,3 +235,15 @@ TEST_F(Bds5Program, EscapeStopsAListing) {
     EXPECT_TRUE(rest.ends_with("\r\n-->")) << rest;
     EXPECT_LT(rest.size(), 200u) << "the rest of the dump was dropped";
 }
+
+TEST_F(Bds5Program, PowerLostWhileLoadingCorruptsTheProgram) { // L3712, L3746, L7513
+    download({"1$", "P \"OK\"", "B"});
+    type(">BDS\r");
+    type("1$\r");
+    drive.powerUp(); // power fails in the middle of the download
+    const std::string signOn = wait(100ms);
+    EXPECT_NE(signOn.find("\aERR 202 USER PROGRAM CORRUPT\r\n-->"), std::string::npos) << signOn;
+    EXPECT_NE(type("RUN 1\r").find("\aERR 202 'RUN'"), std::string::npos);
+    download({"1$", "P \"OK\"", "B"});
+    EXPECT_EQ(type("RUN 1\r", 20ms), "RUN 1\r\nOK\r\n-->") << ">BDS clears the corruption";
+}
