@@ -104,7 +104,9 @@ void Bds5Drive::step(Microseconds dt) {
         raiseFault(105);
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
-    m_state.motion.step(dt, m_state.variables);
+    if (const int fault = m_state.motion.step(dt, m_state.variables)) raiseFault(fault);
+    // The hardware LIMIT input opening while enabled: ERR 24, disable, the motor coasts (L2245-2249).
+    if (m_state.enabled && !switchOn("LIMIT", true)) raiseFault(24);
     m_state.recorder.step(dt, m_state.variables);
     if (m_executor.running()) runProgram();
     m_uart.advance(dt);

@@ -142,6 +142,8 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     }
     if (word == "EN" || word == "DIS") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
+        if (word == "EN" && m_state.variables.read("REMOTE").value_or(1) == 0) // needs REMOTE (L7183)
+            return {Bds5Error{10, "EN", 0}};
         m_state.enabled = word == "EN";
         if (m_state.enabled) { // EN clears the FAULT latch and the macro memory (L2111-2115, L2522)
             m_state.variables.set("FAULT", 0);
@@ -258,7 +260,10 @@ Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const Exe
     const auto first = basicValue(args[0], unit, error);
     if (!first) return {error};
     if (word == "NORM") {
+        if (m_state.variables.read("GEAR").value_or(0)) return {Bds5Error{56, joined(entries), 0}};
         if (const int e = m_state.motion.normalize(*first)) return {Bds5Error{e, joined(entries), 0}};
+        m_state.variables.set("PFB", std::int32_t(*first));
+        m_state.variables.set("PCMD", std::int32_t(*first));
         return {};
     }
     if (word == "J") {
@@ -545,6 +550,19 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
     if (!cat::findVariable(name)) return Bds5Error{80, name, 0};
     const ExpressionResult r = evaluate(expression, [this](auto n) { return readValue(n); });
     if (r.error) return Bds5Error{r.error, expression, 0};
+    if (name == "ROTARY" && r.value == 1) { // PFB must already lie in 0..PROTARY (ERR 61, L7322)
+        const auto pfb = m_state.variables.read("PFB").value_or(0);
+        if (pfb < 0 || pfb > m_state.variables.read("PROTARY").value_or(0)) return Bds5Error{61, name, 0};
+    }
+    if (name == "PFB") { // PFB=p is NORM p (L2449-2483)
+        std::optional<Bds5Error> error;
+        const auto basic = m_state.variables.toBasic(cat::UnitClass::Position, r.value);
+        if (!basic) return Bds5Error{96, expression, 0};
+        if (const int e = m_state.motion.normalize(*basic)) return Bds5Error{e, name, 0};
+        m_state.variables.set("PFB", std::int32_t(*basic));
+        m_state.variables.set("PCMD", std::int32_t(*basic));
+        return std::nullopt;
+    }
     if (const int error = m_state.variables.write(name, r.value, m_state.enabled))
         return Bds5Error{error, error == 83 ? expression : name, 0};
     return std::nullopt;

@@ -3,6 +3,7 @@
 
 #include "drive_core/catalog/bds5_catalog.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -31,6 +32,9 @@ int Bds5Motion::checkCanMove(const Bds5VariableStore& vars, bool enabled) const 
     return 0;
 }
 
+// MRD, MA, JT, JF, MCA and NORM are refused with the gearbox on (ERR 56, L7303, L3023, L2483).
+int Bds5Motion::checkNoGear(const Bds5VariableStore& vars) const { return basic(vars, "GEAR") != 0 ? 56 : 0; }
+
 int Bds5Motion::jog(const Bds5VariableStore& vars, bool enabled, std::int64_t velocity) {
     if (const int e = checkCanMove(vars, enabled)) return e;
     if (std::llabs(velocity) > std::int64_t(basic(vars, "VMAX"))) return 33; // J: within ±VMAX (L7254)
@@ -46,6 +50,11 @@ int Bds5Motion::jog(const Bds5VariableStore& vars, bool enabled, std::int64_t ve
 int Bds5Motion::move(const Bds5VariableStore& vars, bool enabled, std::int64_t target,
                      std::optional<std::int64_t> velocity, bool incremental) {
     if (const int e = checkCanMove(vars, enabled)) return e;
+    if (!incremental)
+        if (const int e = checkNoGear(vars)) return e;
+    // Rotary mode: absolute targets must lie in 0..PROTARY (ERR 60, L7314).
+    if (!incremental && basic(vars, "ROTARY") != 0 && (target < 0 || double(target) > basic(vars, "PROTARY")))
+        return 60;
     const std::int64_t v = velocity.value_or(std::int64_t(basic(vars, "VDEFAULT")));
     if (v <= 0 || v > std::int64_t(basic(vars, "VMAX"))) return 33; // other moves: 0..+VMAX (L7254)
     const double acc = rate(vars, "ACC");
@@ -61,6 +70,7 @@ int Bds5Motion::move(const Bds5VariableStore& vars, bool enabled, std::int64_t t
 int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t position, std::int64_t velocity,
                       bool to) {
     if (const int e = checkCanMove(vars, enabled)) return e;
+    if (const int e = checkNoGear(vars)) return e;
     if (std::llabs(velocity) > std::int64_t(basic(vars, "VMAX"))) return 33;
     const double v0 = m_profile.velocity();
     if (v0 == 0) return 41; // MOVE NEEDS MOTION
@@ -85,6 +95,7 @@ int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t 
 int Bds5Motion::moveRd(const Bds5VariableStore& vars, bool enabled, std::int64_t rdPosition, std::int64_t velocity,
                        int direction) {
     if (const int e = checkCanMove(vars, enabled)) return e;
+    if (const int e = checkNoGear(vars)) return e;
     if (m_profile.moving()) return 31; // TOO MANY MRD MOVES: needs an empty buffer
     if (velocity <= 0 || velocity > std::int64_t(basic(vars, "VMAX"))) return 33;
     const std::int64_t perRev = 4096; // the reference 12-bit R/D
@@ -110,6 +121,8 @@ int Bds5Motion::keepMoving(bool enabled) {
 int Bds5Motion::macroSection(const Bds5VariableStore& vars, std::int64_t positionOrDistance, bool absolute,
                              std::optional<std::int64_t> first, std::optional<std::int64_t> second) {
     if (m_macroId && m_profile.activeId() == m_macroId) return 48; // MCA/MCI RUNNING
+    if (absolute)
+        if (const int e = checkNoGear(vars)) return e;
     if (!m_macro.open() || m_macro.segments().empty()) {
         m_macro.reset();
         m_macroStart = m_profile.finalPosition();
@@ -155,8 +168,28 @@ int Bds5Motion::normalize(std::int64_t position) {
     return 0;
 }
 
-void Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
+int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
     m_profile.step(double(dt.count()) / 1e6);
+    const double p = m_profile.position();
+    if (p > double(INT32_MAX) || p < double(INT32_MIN)) { // PFB ROLLOVER (L7234): beyond ±2,147,483,647
+        halt();
+        m_profile.setPosition(std::clamp(p, double(INT32_MIN), double(INT32_MAX)));
+        writeVariables(vars);
+        return 26;
+    }
+    writeVariables(vars);
+    // Software limits (L2237-2259): beyond PMAX no positive motion, below PMIN no negative motion.
+    if (basic(vars, "PLIM") != 0 && m_profile.moving()) {
+        const double v = m_profile.velocity();
+        if ((v > 0 && p > basic(vars, "PMAX")) || (v < 0 && p < basic(vars, "PMIN"))) {
+            stop(vars);
+            return 23;
+        }
+    }
+    return 0;
+}
+
+void Bds5Motion::writeVariables(Bds5VariableStore& vars) const {
     const auto position = std::int32_t(std::llround(m_profile.position()));
     const auto velocity = std::int32_t(std::llround(m_profile.velocity() * kBasicPerCountPerSecond));
     vars.set("PCMD", position);

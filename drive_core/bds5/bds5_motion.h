@@ -49,11 +49,14 @@ public:
     // W n on the last motion command (W 0: until motion has stopped).
     bool waitDone(int segment) const { return m_profile.reached(m_profile.lastId(), segment); }
 
-    // Advances the profile and writes the monitor variables.
-    void step(Microseconds dt, Bds5VariableStore& vars);
+    // Advances the profile and writes the monitor variables. Returns an error the motion itself raised:
+    // 23 software overtravel (PFB beyond PMAX/PMIN with PLIM on, moving outward), 26 PFB rollover.
+    int step(Microseconds dt, Bds5VariableStore& vars);
 
 private:
     int checkCanMove(const Bds5VariableStore& vars, bool enabled) const;
+    void writeVariables(Bds5VariableStore& vars) const;
+    int checkNoGear(const Bds5VariableStore& vars) const;
     double rate(const Bds5VariableStore& vars, const char* name) const; // ACC/DEC/AMAX in counts/s²
 
     motion::ProfileGenerator m_profile;

@@ -25,6 +25,7 @@ TEST(Bds5Motion, NeedsAnEnabledDrive) { // L6039-6050
 
 TEST(Bds5Motion, IncrementalMoveLandsOnItsEnd) { // examples/bds5/05, L2385-2401
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("ACC=1000\r");
     t.type("DEC=1000\r");
@@ -44,6 +45,7 @@ TEST(Bds5Motion, IncrementalMoveLandsOnItsEnd) { // examples/bds5/05, L2385-2401
 
 TEST(Bds5Motion, TypedThirdMoveIsErr30) { // L7242
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("MI 100000 10\r");
     t.type("MI 100000 10\r");
@@ -52,6 +54,7 @@ TEST(Bds5Motion, TypedThirdMoveIsErr30) { // L7242
 
 TEST(Bds5Motion, VelocityOutOfBoundsIsErr33) {
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     EXPECT_NE(t.type("J 8000\r").find("\aERR 33"), std::string::npos) << "VMAX is 7500 RPM";
     EXPECT_NE(t.type("MA 100 -5\r").find("\aERR 33"), std::string::npos);
@@ -59,6 +62,7 @@ TEST(Bds5Motion, VelocityOutOfBoundsIsErr33) {
 
 TEST(Bds5Motion, StopDeceleratesAtAmaxAndJogZeroAtDec) {
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("ACC=10000\r");
     t.type("DEC=1000\r");
@@ -74,7 +78,7 @@ TEST(Bds5Motion, StopDeceleratesAtAmaxAndJogZeroAtDec) {
 
 TEST(Bds5Motion, ProgramIdlesOnAFullBufferWhileBackgroundRuns) { // examples/bds5/41, L4645-4687
     TestDrive t;
-    t.download({"1$", "EN", "MI 1000 10", "P \"FIRST MOVE PROCESSED\"", "MI 1000 10", "P \"SECOND MOVE PROCESSED\"",
+    t.download({"1$", "PLIM OFF", "EN", "MI 1000 10", "P \"FIRST MOVE PROCESSED\"", "MI 1000 10", "P \"SECOND MOVE PROCESSED\"",
                 "MI 1000 10", "P \"THIRD MOVE PROCESSED\"", "B", "BACKGROUND$", "P \"UPPER TASK IDLED\"", "D 250",
                 "END"});
     t.type("ACC=1000\r");
@@ -89,7 +93,7 @@ TEST(Bds5Motion, ProgramIdlesOnAFullBufferWhileBackgroundRuns) { // examples/bds
 
 TEST(Bds5Motion, WaitZeroHoldsUntilMotionStops) { // examples/bds5/42, L4700-4750
     TestDrive t;
-    t.download({"1$", "EN", "MI 2000 100", "P \"MOVE PROCESSED\"", "W 0", "P \"ALL MOTION STOPPED\"", "P PFB", "B"});
+    t.download({"1$", "PLIM OFF", "EN", "MI 2000 100", "P \"MOVE PROCESSED\"", "W 0", "P \"ALL MOTION STOPPED\"", "P PFB", "B"});
     t.type("ACC=1000\r");
     t.type("DEC=1000\r");
     const std::string early = t.type("RUN 1\r", 150ms); // the move takes about 0.4 s
@@ -101,13 +105,14 @@ TEST(Bds5Motion, WaitZeroHoldsUntilMotionStops) { // examples/bds5/42, L4700-475
 
 TEST(Bds5Motion, WaitForSegmentTwo) {
     TestDrive t;
-    t.download({"1$", "EN", "MI 5000 100", "W 2", "P SEG[1] VCMD[4]", "B"});
+    t.download({"1$", "PLIM OFF", "EN", "MI 5000 100", "W 2", "P SEG[1] VCMD[4]", "B"});
     t.type("ACC=1000\r");
     EXPECT_NE(t.type("RUN 1\r", 300ms).find("2 100\r\n-->"), std::string::npos);
 }
 
 TEST(Bds5Motion, NormalizeOnlyAtRest) {
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("NORM 500\r");
     EXPECT_EQ(value(t, "PFB"), "500");
@@ -117,6 +122,7 @@ TEST(Bds5Motion, NormalizeOnlyAtRest) {
 
 TEST(Bds5Macro, Example1ElevenThousandCountsInFiveSegments) { // L2534-2552
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("ACC=20000\r");
     t.type("DEC=20000\r");
@@ -137,6 +143,7 @@ TEST(Bds5Macro, Example1ElevenThousandCountsInFiveSegments) { // L2534-2552
 
 TEST(Bds5Macro, Example2DwellsAndReturnsHome) { // L2569-2576
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("ACC=20000\r");
     t.type("DEC=20000\r");
@@ -151,6 +158,7 @@ TEST(Bds5Macro, Example2DwellsAndReturnsHome) { // L2569-2576
 
 TEST(Bds5Macro, ErrorsOfTheManual) { // L7260-7279
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("MCI 1000 100 50\r");
     EXPECT_NE(t.type("MCGO\r").find("\aERR 43"), std::string::npos) << "last section not at rest";
@@ -158,12 +166,14 @@ TEST(Bds5Macro, ErrorsOfTheManual) { // L7260-7279
     EXPECT_NE(t.type("MCI -100\r").find("\aERR 40"), std::string::npos) << "reversing at speed";
     EXPECT_NE(t.type("MCI 1 1000 0\r").find("\aERR 42"), std::string::npos) << "too short for the speeds";
     t.type("DIS\r");
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r"); // enabling resets the macro memory
     EXPECT_NE(t.type("MCI 100\r").find("\aERR 41"), std::string::npos) << "no speed from rest";
 }
 
 TEST(Bds5JogTo, ChangesSpeedSoTheRampEndsAtThePosition) { // L2734-2800
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("ACC=10000\r");
     t.type("DEC=10000\r");
@@ -182,6 +192,7 @@ TEST(Bds5JogTo, ChangesSpeedSoTheRampEndsAtThePosition) { // L2734-2800
 
 TEST(Bds5Mrd, MovesTheShortWayWithinARevolution) { // L2581-2613
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("NORM 4000\r");
     t.type("MRD 100 100\r");

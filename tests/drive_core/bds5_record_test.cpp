@@ -5,6 +5,7 @@ using namespace bds5_test;
 
 TEST(Bds5Record, RecordsAJogAndPlaysItBack) { // L6370-6397: RECORD 500 1 VFB then J 1000
     TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("EN\r");
     t.type("ACC=10000\r");
     EXPECT_EQ(t.type("RECORD 200 1 VCMD PCMD\r"), "RECORD 200 1 VCMD PCMD\r\n-->");
