@@ -279,6 +279,10 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
         return ProgramStop::Running;
     case Flow::Repeat: t.pc = line; return ProgramStop::Running;
     case Flow::Dwell: t.wakeAt = m_cpu + std::chrono::milliseconds(o.target); return ProgramStop::Running;
+    case Flow::WaitPrinter: // pre-execution idle of a nested print: the whole line runs again
+        t.pc = line;
+        t.waitPrinter = true;
+        return ProgramStop::Running;
     case Flow::WaitMotion: // pre-execution idle: the line runs again when the buffer has room
         t.pc = line;
         t.waitMotion = true;

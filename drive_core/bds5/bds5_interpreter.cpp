@@ -122,6 +122,15 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         if (!state || (*state != 0 && *state != 1)) return {Bds5Error{83, args[1].text, 0}};
         return {std::nullopt, Flow::Hold, 0, *state == 1, args[0].text};
     }
+    // A print in a program idles until the previous one has left and no INPUT waits (L4637, L4797-4814);
+    // this catches the prints inside ? and TIL, whose lines the executor cannot see as prints.
+    const bool printing = word == "P" || word == "PS" || word == "R" || word == "RS" || word == "PA" ||
+                          word == "PAS" || word == "INPUT";
+    if (printing && context.origin == Origin::Program) {
+        if ((m_state.serialBusy || m_state.pendingInput) && context.nested)
+            return {std::nullopt, Flow::WaitPrinter};
+        m_state.serialBusy = true;
+    }
     // P/PS end with CR LF, R/RS with CR only (refresh a line), v3 PA/PAS with nothing (L4191-4378, L9305).
     if (word == "P" || word == "PS") return {print(entries, "\r\n", word == "PS", out)};
     if (word == "R" || word == "RS") return {print(entries, "\r", word == "RS", out)};
@@ -390,7 +399,9 @@ Outcome Bds5Interpreter::quickIf(std::span<const Entry> entries, const ExecConte
         if (!part.empty() && part.front().text == "TIL") return {Bds5Error{117, part.front().text, 0}};
     const auto chosen = *c ? whenTrue : whenFalse;
     if (chosen.empty()) return {};
-    return dispatch(chosen, context, out);
+    ExecContext inner = context;
+    inner.nested = true;
+    return dispatch(chosen, inner, out);
 }
 
 // TIL cond [instr] — while cond is false, run instr (if any) and come back to this line (L3902-3936).
@@ -404,7 +415,9 @@ Outcome Bds5Interpreter::til(std::span<const Entry> entries, const ExecContext& 
     if (!instruction.empty()) {
         if (instruction.front().text == "TIL" || instruction.front().text == "?")
             return {Bds5Error{117, instruction.front().text, 0}};
-        Outcome inner = dispatch(instruction, context, out);
+        ExecContext nested = context;
+        nested.nested = true;
+        Outcome inner = dispatch(instruction, nested, out);
         if (inner.error || inner.flow != Flow::Next) return inner;
     }
     return {std::nullopt, Flow::Repeat};

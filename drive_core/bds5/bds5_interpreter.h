@@ -57,7 +57,8 @@ enum class Origin { Terminal, Monitor, Program };
 
 struct ExecContext {
     Origin origin = Origin::Terminal;
-    int line = 0; // program line number (Origin::Program)
+    int line = 0;        // program line number (Origin::Program)
+    bool nested = false; // the instruction of a ? or TIL (the executor checked the line's own first word)
 };
 
 // What the instruction asks of whoever runs it.
@@ -79,6 +80,7 @@ enum class Flow {
     Edit,     // ED: enter the resident editor
     Input,    // INPUT: the program waits for the operator (Outcome::input)
     WaitMotion,  // MA/MI/MCGO with the motion buffer full: run this line again when there is room
+    WaitPrinter, // a print inside ? or TIL while the port is busy: run this line again when it is free
     WaitSegment, // W n: idle until segment target of the last motion command has started
     If,       // IF c: condition
     Elif,     // ELIF c: condition
