@@ -563,6 +563,8 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
     if (!cat::findVariable(name)) return Bds5Error{80, name, 0};
     const ExpressionResult r = evaluate(expression, [this](auto n) { return readValue(n); });
     if (r.error) return Bds5Error{r.error, expression, 0};
+    if (name == "GATEMODE" && r.value == 1 && m_state.motion.moving()) // not while motion is commanded (L5957)
+        return Bds5Error{57, name, 0};
     if (name == "ROTARY" && r.value == 1) { // PFB must already lie in 0..PROTARY (ERR 61, L7322)
         const auto pfb = m_state.variables.read("PFB").value_or(0);
         if (pfb < 0 || pfb > m_state.variables.read("PROTARY").value_or(0)) return Bds5Error{61, name, 0};

@@ -169,6 +169,21 @@ int Bds5Motion::normalize(std::int64_t position) {
 }
 
 int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
+    // GATEMODE (L5949-5971): commanded motion waits for the GATE input to go high, then GATEMODE turns off.
+    // Turning GATEMODE off first makes the drive forget the motion.
+    const bool gate = basic(vars, "GATE") != 0;
+    const bool rising = gate && !m_gateLast;
+    m_gateLast = gate;
+    if (basic(vars, "GATEMODE") != 0) {
+        m_profile.setHeld(true);
+        if (m_profile.moving() && rising) {
+            m_profile.setHeld(false);
+            vars.set("GATEMODE", 0);
+        }
+    } else if (m_profile.held()) {
+        m_profile.setHeld(false);
+        if (m_profile.moving() && m_profile.velocity() == 0) m_profile.stop(1);
+    }
     m_profile.step(double(dt.count()) / 1e6);
     const double p = m_profile.position();
     if (p > double(INT32_MAX) || p < double(INT32_MIN)) { // PFB ROLLOVER (L7234): beyond ±2,147,483,647

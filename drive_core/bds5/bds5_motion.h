@@ -63,6 +63,7 @@ private:
     Bds5Macro m_macro;
     double m_macroStart = 0; // PFNL when the macro's first section was defined (for MCA)
     int m_macroId = 0;       // the profile id of the last MCGO (ERR 48 while it runs)
+    bool m_gateLast = false; // the GATE input, for its rising edge
 };
 
 } // namespace drive_core::bds5

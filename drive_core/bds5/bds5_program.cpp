@@ -9,14 +9,13 @@ namespace drive_core::bds5 {
 void Bds5Program::clear() {
     m_lines.clear();
     m_sizeChars = 0;
-    m_indexed = false;
+    invalidate();
 }
 
 bool Bds5Program::append(std::string line) {
     if (m_sizeChars + line.size() + 1 > kProgramCapacityChars) return false;
     m_sizeChars += line.size() + 1;
-    m_lines.push_back(std::move(line));
-    m_indexed = false;
+    m_lines.push_back(std::move(line)); // the index extends to it when next asked: no invalidate()
     return true;
 }
 
@@ -25,7 +24,7 @@ bool Bds5Program::insert(int beforeLine, std::string line) {
     const auto at = std::size_t(std::clamp(beforeLine, 1, lineCount() + 1) - 1);
     m_sizeChars += line.size() + 1;
     m_lines.insert(m_lines.begin() + std::ptrdiff_t(at), std::move(line));
-    m_indexed = false;
+    invalidate();
     return true;
 }
 
@@ -34,7 +33,7 @@ bool Bds5Program::replace(int number, std::string line) {
     if (m_sizeChars - old.size() + line.size() > kProgramCapacityChars) return false;
     m_sizeChars = m_sizeChars - old.size() + line.size();
     old = std::move(line);
-    m_indexed = false;
+    invalidate();
     return true;
 }
 
@@ -43,7 +42,7 @@ void Bds5Program::erase(int first, int last) {
     last = std::min(last, lineCount());
     for (int n = first; n <= last; ++n) m_sizeChars -= m_lines[std::size_t(n - 1)].size() + 1;
     if (first <= last) m_lines.erase(m_lines.begin() + (first - 1), m_lines.begin() + last);
-    m_indexed = false;
+    invalidate();
 }
 
 const LexedLine& Bds5Program::lexed(int number) const {
@@ -77,14 +76,20 @@ std::optional<DedicatedLabel> Bds5Program::dedicatedLabel(const LexedLine& line)
     return std::nullopt;
 }
 
-void Bds5Program::index() const {
-    if (m_indexed) return;
+void Bds5Program::invalidate() {
+    m_indexedLines = 0;
     m_lexed.clear();
     m_labels.clear();
     m_dedicated.clear();
     m_checkError.reset();
-    std::optional<int> errorLabelLine;
-    for (std::size_t i = 0; i < m_lines.size(); ++i) {
+    m_errorLabelLine.reset();
+}
+
+// Indexes the lines not indexed yet: all of them after a change, only the new ones after appends (a
+// >BDS download asks for the index between lines when ^V arrives, so a full pass each time would make
+// a download quadratic in its length).
+void Bds5Program::index() const {
+    for (std::size_t i = m_indexedLines; i < m_lines.size(); ++i) {
         const int number = int(i) + 1;
         auto lexed = lexLine(m_lines[i]);
         if (std::holds_alternative<Bds5Error>(lexed)) {
@@ -96,15 +101,15 @@ void Bds5Program::index() const {
         const auto numeric = numericLabel(l);
         const auto dedicated = dedicatedLabel(l);
         if (!numeric && !dedicated) continue;
-        if (errorLabelLine && !m_checkError) // ERROR$ must be the last label (L7352)
+        if (m_errorLabelLine && !m_checkError) // ERROR$ must be the last label (L7352)
             m_checkError = Bds5Error{74, l.entries.front().text, number};
         if (numeric && !m_labels.emplace(*numeric, number).second && !m_checkError)
             m_checkError = Bds5Error{71, l.entries.front().text, number};
         if (dedicated && !m_dedicated.emplace(*dedicated, number).second && !m_checkError)
             m_checkError = Bds5Error{71, l.entries.front().text, number};
-        if (dedicated == DedicatedLabel::Error) errorLabelLine = number;
+        if (dedicated == DedicatedLabel::Error) m_errorLabelLine = number;
     }
-    m_indexed = true;
+    m_indexedLines = m_lines.size();
 }
 
 std::optional<Bds5Error> Bds5Program::check() const {

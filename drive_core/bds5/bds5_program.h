@@ -66,17 +66,19 @@ public:
 
 private:
     void index() const;
+    void invalidate(); // after any change but an append
 
     std::vector<std::string> m_lines;
     std::size_t m_sizeChars = 0;
     std::string m_password;
     bool m_corrupt = false;
-    // Derived on demand after a change.
-    mutable bool m_indexed = false;
+    // Derived on demand: lines [0, m_indexedLines) are indexed.
+    mutable std::size_t m_indexedLines = 0;
     mutable std::vector<LexedLine> m_lexed;
     mutable std::map<int, int> m_labels;
     mutable std::map<DedicatedLabel, int> m_dedicated;
     mutable std::optional<Bds5Error> m_checkError;
+    mutable std::optional<int> m_errorLabelLine; // ERROR$, once seen: any label after it is ERR 74
 };
 
 } // namespace drive_core::bds5

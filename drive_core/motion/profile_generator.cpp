@@ -137,6 +137,7 @@ void ProfileGenerator::startNext() {
 }
 
 void ProfileGenerator::step(double dt_s) {
+    if (m_held) return;
     double left = dt_s;
     while (m_active && left > 0) {
         Motion& m = *m_active;

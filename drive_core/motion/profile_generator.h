@@ -49,6 +49,10 @@ public:
     // Sets the commanded position without motion (NORM, ZPE); only meaningful at rest.
     void setPosition(double counts);
 
+    // Held, commanded motion waits before it starts (BDS5 GATEMODE: begin on the GATE input).
+    void setHeld(bool held) { m_held = held; }
+    bool held() const { return m_held; }
+
     void step(double dt_s);
 
     double position() const { return m_position; }
@@ -91,6 +95,7 @@ private:
     double m_position = 0;
     double m_velocity = 0;
     int m_nextId = 1;
+    bool m_held = false;
 };
 
 } // namespace drive_core::motion

@@ -202,3 +202,31 @@ TEST(Bds5Mrd, MovesTheShortWayWithinARevolution) { // L2581-2613
     t.wait(2000ms);
     EXPECT_EQ(value(t, "PFB"), "8096");
 }
+
+TEST(Bds5Gate, MotionWaitsForTheGateInput) { // L5949-5971
+    TestDrive t;
+    t.type("PLIM OFF\r");
+    t.type("EN\r");
+    t.type("GATEMODE ON\r");
+    t.type("MI 1000 100\r");
+    t.type("MI -1000\r");
+    t.wait(200ms);
+    EXPECT_EQ(value(t, "PFB"), "0") << "precalculated, waiting for GATE";
+    t.drive.setDedicatedInput("GATE", true);
+    t.wait(300ms);
+    EXPECT_EQ(value(t, "GATEMODE"), "0") << "GATEMODE turns off once motion begins";
+    EXPECT_NE(value(t, "PFB"), "0");
+    EXPECT_NE(t.type("GATEMODE ON\r").find("\aERR 57"), std::string::npos) << "not while motion is commanded";
+}
+
+TEST(Bds5Gate, TurningGatemodeOffForgetsTheMotion) {
+    TestDrive t;
+    t.type("PLIM OFF\r");
+    t.type("EN\r");
+    t.type("GATEMODE ON\r");
+    t.type("MI 1000 100\r");
+    t.type("GATEMODE OFF\r");
+    t.wait(500ms);
+    EXPECT_EQ(value(t, "PFB"), "0");
+    EXPECT_EQ(value(t, "SEG"), "0");
+}
