@@ -27,10 +27,15 @@ public:
     // UART, drive -> host. Returns and clears everything the drive has transmitted so far.
     virtual std::string takeTransmitted() = 0;
 
-    // Advance the drive's time by dt. The servo and command processors run inside.
+    // Advance the drive's time by dt. The servo and command processors run inside; step(0) handles what
+    // was received without letting time pass.
     virtual void step(Microseconds dt) = 0;
     // Total simulated time since power-up.
     virtual Microseconds now() const = 0;
+
+    // The serial line's pace: limited (the default), bytes leave at the drive's baud rate as on a real
+    // port; unlimited, at once — for an in-process link with no wire, and for tests that want speed.
+    virtual void setLineRateLimited(bool limited) = 0;
 
     // Discrete I/O pins, numbered from 1 as the drive's manual numbers them.
     virtual int inputCount() const = 0;

@@ -90,8 +90,15 @@ void Bds5Session::onBytes(const QByteArray& bytes) {
     const QString text = QString::fromLatin1(bytes);
     m_tail = (m_tail + text).right(kTailKeep);
     if (m_current) m_response += text;
-    // A prompt counts only when it ends the stream and the drive then stays silent (§2.10 rule 6).
-    if (trailingPrompt(m_tail)) m_silence.start();
+    // A prompt counts only when it ends the stream and the drive then stays silent (§2.10 rule 6). In
+    // program-load mode nothing but the echo comes before the l-> prompt: it counts at once, which keeps
+    // a download at the wire's pace.
+    const auto prompt = trailingPrompt(m_tail);
+    if (prompt && m_current && modeOfPrompt(*prompt) == Bds5Mode::ProgramLoad) {
+        m_silence.stop();
+        return onPromptConfirmed();
+    }
+    if (prompt) m_silence.start();
     else m_silence.stop();
 }
 

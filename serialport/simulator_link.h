@@ -20,6 +20,7 @@ public:
     struct Options {
         double speedFactor = 1.0; // simulated seconds per wall-clock second
         int baudRate = 9600;      // the drive's BAUD: its UART paces what it sends; sessions time out by it
+        bool lineRateLimited = true; // false: no wire, every byte crosses at once (fast tests, benchmarks)
     };
 
     SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent = nullptr);

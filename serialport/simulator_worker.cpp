@@ -23,6 +23,7 @@ void SimulatorWorker::start() {
         emit failed(tr("No simulator for the %1 yet").arg(QString::fromLatin1(drive_core::familyName(m_family))));
         return;
     }
+    m_drive->setLineRateLimited(m_options.lineRateLimited);
     m_drive->powerUp();
     m_clock.start();
     m_timer = new QTimer(this);
@@ -35,6 +36,10 @@ void SimulatorWorker::start() {
 void SimulatorWorker::receive(const QByteArray& bytes) {
     if (!m_drive) return;
     m_drive->receive(std::string_view(bytes.constData(), std::size_t(bytes.size())));
+    // Answer at once instead of at the next 1 ms tick: the drive handles its input without time passing.
+    m_drive->step(std::chrono::microseconds(0));
+    const std::string out = m_drive->takeTransmitted();
+    if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
 }
 
 void SimulatorWorker::tick() {

@@ -31,6 +31,7 @@ public:
     void receive(std::string_view bytes) override;
     std::string takeTransmitted() override;
     void step(Microseconds dt) override;
+    void setLineRateLimited(bool limited) override { m_uart.setUnlimited(!limited); }
     Microseconds now() const override { return m_time; }
 
     static constexpr int kInputCount = 16; // I1-I16

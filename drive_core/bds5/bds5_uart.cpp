@@ -22,8 +22,12 @@ void Bds5Uart::reset(int baud) {
 
 void Bds5Uart::write(std::string_view bytes) {
     if (bytes.empty()) return;
-    m_fifo.append(bytes);
     m_atLineStart = bytes.back() == '\n';
+    if (m_unlimited && !busy()) {
+        if (!m_muted) m_sent.append(bytes);
+        return;
+    }
+    m_fifo.append(bytes);
 }
 
 void Bds5Uart::advance(Microseconds dt) {

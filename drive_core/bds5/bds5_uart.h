@@ -15,6 +15,8 @@ public:
     static bool validBaud(int baud);
 
     void reset(int baud);
+    // Unlimited, every byte leaves at once (an in-process link with no wire to pace it).
+    void setUnlimited(bool unlimited) { m_unlimited = unlimited; }
     void write(std::string_view bytes);
     // Lets dt of line time pass: moves what the line carried in that time to the sent buffer.
     void advance(Microseconds dt);
@@ -37,6 +39,7 @@ private:
     int m_baud = 9600;
     bool m_atLineStart = true;
     bool m_muted = false;
+    bool m_unlimited = false;
 };
 
 } // namespace drive_core::bds5

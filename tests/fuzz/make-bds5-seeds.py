@@ -113,18 +113,26 @@ LONG = {
     "1mb-of-nul-and-bit7": (bytes([0, 0x80, 0xC1, 0xF7]) * 16 + flood(256)) * 64 + ms(10) + typed("P \"STILL HERE\""),
 }
 
+# Reproducers of fixed findings: replayed by CTest from corpus/bds5 (and fuzzed from).
+CRASH = {
+    # ^V between the lines of a >BDS download: each one re-indexed the whole program (fireVariableTask asks
+    # for VARIABLE$), so 24 KB of download took minutes. Fixed: appends extend the index (bds5_program.cpp).
+    "ctrl-v-during-download-quadratic": typed(">BDS") + (b"X\r\x16" * 64 + flood(4)) * 4 + ms(10) + ESC + ms(10),
+    # Prints inside TIL and ? did not wait for the port (L4637): the UART queue grew without bound.
+    "til-print-outruns-line": download(["1$", "TIL X1 EQ 1 P \"TIL PRINTS\""]) + typed("RUN 1") + tens(256)
+    + tens(256),
+    "quick-if-print-outruns-line": download(["1$", "? 1 EQ 1 P \"QUICK IF PRINTS\"", "GOTO 1"]) + typed("RUN 1")
+    + tens(256) + tens(256),
+}
+
 # Reproducers of findings in files this fuzzer's owner may not change (open/bds5/README.md): the replay
 # test does not run them until they are fixed and moved to corpus/bds5.
 OPEN = {
     # BACKGROUND$ as the last line: the task runs off the end at no cost and restarts at once, so every
     # step() spins kMaxLinesPerAdvance (100,000) times (bds5_executor.cpp).
     "background-last-line-spins": download(["BACKGROUND$"]) + typed("RUN") + tens(100),
-    # Lines that print without waiting for the line (L4637): ERR HIST / ERR n, and P after TIL or ?.
+    # ERR HIST / ERR n print without waiting for the port (L4637): the UART queue grows without bound.
     "err-hist-loop-outruns-line": download(["1$", "ERR HIST", "GOTO 1"]) + typed("RUN 1") + tens(256) + tens(256),
-    "til-print-outruns-line": download(["1$", "TIL X1 EQ 1 P \"TIL PRINTS\""]) + typed("RUN 1") + tens(256)
-    + tens(256),
-    "quick-if-print-outruns-line": download(["1$", "? 1 EQ 1 P \"QUICK IF PRINTS\"", "GOTO 1"]) + typed("RUN 1")
-    + tens(256) + tens(256),
 }
 
 
@@ -139,6 +147,7 @@ def write(directory, prefix, seeds):
 def main():
     write(OUT, "seed-", SEEDS)
     write(OUT + "-long", "seed-", LONG)
+    write(OUT, "crash-", CRASH)
     write(os.path.join(HERE, "open", "bds5"), "crash-", OPEN)
 
 
