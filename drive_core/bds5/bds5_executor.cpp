@@ -120,12 +120,26 @@ void Bds5Executor::pollAutoManual() {
     if (line && (manual || rising)) launch(TaskLevel::Main, *line + 1);
 }
 
+// RD counts down in milliseconds of the external clock: each real millisecond advances it by
+// min(1, ΔPEXT / REGKHZ) (REGKHZ kHz = REGKHZ external counts a millisecond; digest §7.20). With no
+// external input moving, an RD waits for good, as on a drive whose master encoder stands still.
+void Bds5Executor::advanceRegulatedDwells() {
+    const std::int32_t pext = m_state.variables.read("PEXT").value_or(0);
+    const double khz = std::max<std::int32_t>(1, m_state.variables.read("REGKHZ").value_or(1000));
+    const double delta = m_pextLast ? double(pext - *m_pextLast) : 0.0;
+    m_pextLast = pext;
+    const double advance_ms = std::clamp(delta / khz, 0.0, 1.0);
+    for (Task& t : m_tasks)
+        if (t.regulatedLeft_ms) t.regulatedLeft_ms = *t.regulatedLeft_ms - advance_ms;
+}
+
 bool Bds5Executor::idle(const Task& t) const {
     if (!t.active) return true;
     if (t.waitPrinter && printerBlocked()) return true;
     if (t.waitInput && m_state.pendingInput) return true;
     if (t.waitMotion && m_state.motion.bufferFull()) return true;
     if (t.waitSegment && !m_state.motion.waitDone(*t.waitSegment)) return true;
+    if (t.regulatedLeft_ms && *t.regulatedLeft_ms > 0) return true;
     if (t.wakeAt > m_cpu) return true;
     if (t.hold) {
         const auto v = m_state.variables.read(*t.hold);
@@ -148,6 +162,7 @@ ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optio
             pollAlarms(false);
             pollAutoManual();
         }
+        if (n == 0) advanceRegulatedDwells();
         // MULTI OFF disables alarm C, variable input and background (not A/B) (L4569-4577).
         const bool multi = m_state.variables.read("MULTI").value_or(1) != 0;
         std::optional<TaskLevel> pick;
@@ -221,6 +236,7 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
     t.waitInput = false;
     t.waitMotion = false;
     t.waitSegment.reset();
+    t.regulatedLeft_ms.reset();
     if (m_hook && !m_hook(level, line, out)) {
         m_paused = true; // single-step: this line waits for the operator's Enter
         return ProgramStop::Running;
@@ -279,6 +295,12 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
         return ProgramStop::Running;
     case Flow::Repeat: t.pc = line; return ProgramStop::Running;
     case Flow::Dwell: t.wakeAt = m_cpu + std::chrono::milliseconds(o.target); return ProgramStop::Running;
+    case Flow::RegulatedDwell:
+        for (std::size_t i = 0; i < kTaskCount; ++i) // one task at a time may use RD (ERR 62, L7326)
+            if (TaskLevel(i) != level && m_tasks[i].active && m_tasks[i].regulatedLeft_ms)
+                return fail(Bds5Error{62, "RD", line}, error);
+        t.regulatedLeft_ms = double(o.target);
+        return ProgramStop::Running;
     case Flow::WaitPrinter: // pre-execution idle of a nested print: the whole line runs again
         t.pc = line;
         t.waitPrinter = true;

@@ -77,12 +77,14 @@ private:
         bool waitInput = false;           // INPUT: idle until the operator answers
         bool waitMotion = false;          // a move waits for room in the motion buffer
         std::optional<int> waitSegment;   // W n
+        std::optional<double> regulatedLeft_ms; // RD: external-clock milliseconds still to go
     };
 
     Task& task(TaskLevel level) { return m_tasks[std::size_t(level)]; }
     void launch(TaskLevel level, int line);
     void pollAlarms(bool atEnable);
     void pollAutoManual();
+    void advanceRegulatedDwells();
     bool idle(const Task& t) const;
     bool hasDedicatedTasks() const;
     std::optional<Microseconds> nextWake() const;
@@ -99,6 +101,7 @@ private:
     std::array<Task, kTaskCount> m_tasks;
     std::array<std::optional<bool>, 3> m_alarmLast; // last sampled state of each alarm's switch
     bool m_cycleLast = false;                        // the CYCLE input, for AUTO$'s rising edge
+    std::optional<std::int32_t> m_pextLast;          // PEXT at the last regulated-dwell update
     bool m_multitasking = false;
     bool m_errorHandling = false; // ERROR$ runs: every other task is suspended (L4956-4958)
     bool m_paused = false;

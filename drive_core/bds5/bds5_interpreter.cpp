@@ -105,6 +105,13 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         if (args.size() > 1) return {Bds5Error{82, args[1].text, 0}};
         return {std::nullopt, Flow::Load, 0, false, args.empty() ? std::string() : args.front().text};
     }
+    if (word == "RD") { // RD <ms>: a dwell timed by the external input (L5823-5839, L6999-7009)
+        if (args.size() != 1) return {Bds5Error{82, joined(entries), 0}};
+        const ExpressionResult r = evaluate(args.front().text, [this](auto n) { return readValue(n); });
+        if (r.error) return {Bds5Error{r.error, args.front().text, 0}};
+        if (r.value < 0) return {Bds5Error{83, args.front().text, 0}};
+        return {std::nullopt, Flow::RegulatedDwell, r.value};
+    }
     if (word == "D") {
         if (args.size() != 1) return {Bds5Error{82, joined(entries), 0}};
         const ExpressionResult r = evaluate(args.front().text, [this](auto n) { return readValue(n); });

@@ -73,6 +73,7 @@ enum class Flow {
     Stop,     // S: stop motion (and, from monitor, break)
     Repeat,   // TIL not yet satisfied: run this line again
     Dwell,    // D: idle for target milliseconds
+    RegulatedDwell, // RD: idle for target milliseconds of the external input's clock
     Hold,     // H: idle until switch `text` is ON (condition true) or OFF
     Run,      // RUN [label]: target = label, or -1 for "enable multitasking only"
     Load,     // >BDS [password]: text = password

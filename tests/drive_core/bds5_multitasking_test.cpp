@@ -101,3 +101,10 @@ TEST(Bds5Io, InputsAndTheInWord) {
     EXPECT_EQ(t.type("P IN\r"), "P IN\r\n          18\r\n-->");
     EXPECT_EQ(t.type("P I5\r"), "P I5\r\n           1\r\n-->");
 }
+
+TEST(Bds5Multitasking, RegulatedDwellWaitsForTheExternalInput) { // L5823-5839
+    TestDrive t;
+    t.download({"45$", "REGKHZ=100", "RD 2000", "P \"DONE\"", "B"});
+    EXPECT_EQ(t.type("RUN 45\r", 3000ms), "RUN 45\r\n") << "the master encoder stands still: RD does not end";
+    EXPECT_EQ(t.type("\x18"), "-->");
+}
