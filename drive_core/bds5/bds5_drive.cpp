@@ -206,7 +206,7 @@ void Bds5Drive::handleByte(char c) {
     }
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) return;
     if (int(m_line.size()) >= kMaxLineLength) { // 80 characters an instruction: ring instead (chosen)
-        transmit(std::string_view(&kBell, 1));
+        if (!m_uart.busy()) transmit(std::string_view(&kBell, 1)); // one bell at a time: the queue stays bounded
         return;
     }
     m_line.push_back(c);

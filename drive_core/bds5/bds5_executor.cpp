@@ -23,7 +23,9 @@ constexpr DedicatedLabel kAlarmLabels[] = {DedicatedLabel::AlarmA, DedicatedLabe
 bool printsText(const LexedLine& line) {
     if (line.entries.empty()) return false;
     const std::string& w = line.entries.front().text;
-    return w == "P" || w == "PS" || w == "PA" || w == "PAS" || w == "R" || w == "RS" || w == "INPUT";
+    // ERR n and ERR HIST print too (chosen: they wait for the port like P; ERR CLR prints nothing).
+    const bool errPrints = w == "ERR" && !(line.entries.size() == 2 && line.entries[1].text == "CLR");
+    return w == "P" || w == "PS" || w == "PA" || w == "PAS" || w == "R" || w == "RS" || w == "INPUT" || errPrints;
 }
 } // namespace
 
@@ -85,8 +87,9 @@ bool Bds5Executor::hasDedicatedTasks() const {
 }
 
 void Bds5Executor::fireVariableTask() {
+    if (!m_multitasking || task(TaskLevel::Variable).active) return; // cheap checks before the label index
     const auto line = m_state.program.dedicatedLine(DedicatedLabel::Variable);
-    if (!m_multitasking || !line || task(TaskLevel::Variable).active) return;
+    if (!line) return;
     if (m_state.variables.read("MULTI").value_or(1) == 0) return; // MULTI OFF holds VARIABLE$ (L4569)
     launch(TaskLevel::Variable, *line + 1);
 }
@@ -224,7 +227,10 @@ ProgramStop Bds5Executor::endTask(TaskLevel level) {
 ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::optional<Bds5Error>& error) {
     Task& t = task(level);
     const Bds5Program& program = m_state.program;
-    if (t.pc < 1 || t.pc > program.lineCount()) return endTask(level); // ran off the end: as END
+    if (t.pc < 1 || t.pc > program.lineCount()) { // ran off the end: as END, and it costs END's time
+        m_cpu += 1000us;
+        return endTask(level);
+    }
     const int line = t.pc;
     const LexedLine& lexed = program.lexed(line);
     if (printsText(lexed)) {

@@ -132,7 +132,7 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     // A print in a program idles until the previous one has left and no INPUT waits (L4637, L4797-4814);
     // this catches the prints inside ? and TIL, whose lines the executor cannot see as prints.
     const bool printing = word == "P" || word == "PS" || word == "R" || word == "RS" || word == "PA" ||
-                          word == "PAS" || word == "INPUT";
+                          word == "PAS" || word == "INPUT" || (word == "ERR" && !(args.size() == 1 && args[0].text == "CLR"));
     if (printing && context.origin == Origin::Program) {
         if ((m_state.serialBusy || m_state.pendingInput) && context.nested)
             return {std::nullopt, Flow::WaitPrinter};

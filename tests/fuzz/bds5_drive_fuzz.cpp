@@ -12,6 +12,7 @@
 #include <exception>
 #include <string>
 #include <string_view>
+#include <utility>
 
 // The input is the byte stream at the port, with operations escaped by the bytes 0xF8-0xFF (so a plain
 // text file is a session typed in one go; bytes 0xF8-0xFF reach the drive through 0xFF x):

@@ -133,6 +133,11 @@ OPEN = {
     "background-last-line-spins": download(["BACKGROUND$"]) + typed("RUN") + tens(100),
     # ERR HIST / ERR n print without waiting for the port (L4637): the UART queue grows without bound.
     "err-hist-loop-outruns-line": download(["1$", "ERR HIST", "GOTO 1"]) + typed("RUN 1") + tens(256) + tens(256),
+    # ^V between lines typed in the editor's insert mode: each insert invalidates the program index and
+    # each ^V re-indexes it all (fireVariableTask looks VARIABLE$ up before checking that multitasking is
+    # on), quadratic in the program's length (30 s unoptimised for 24 KB).
+    "ctrl-v-in-editor-quadratic": download(["1$"]) + typed("ED") + typed("I 1") + (b"X\r\x16" * 64 + flood(4)) * 4
+    + ms(10) + ESC + ms(10),
 }
 
 
