@@ -1,0 +1,150 @@
+// servodesk-cli argument parsing.
+#include "cli_options.h"
+
+namespace app::cli {
+
+namespace {
+bool isCommandWord(const QString& w) {
+    static const QStringList kWords{QStringLiteral("check"), QStringLiteral("compile"), QStringLiteral("download"),
+                                    QStringLiteral("upload"), QStringLiteral("vars"), QStringLiteral("send"),
+                                    QStringLiteral("run"), QStringLiteral("stop"), QStringLiteral("record")};
+    return kWords.contains(w);
+}
+} // namespace
+
+QString cliUsage() {
+    return QStringLiteral(
+        "usage: servodesk-cli [--drive bds5|sc750|pmc960] [--port PATH [--baud N] | --sim] COMMAND ...\n"
+        "commands (several may follow one another; they run in order on one connection):\n"
+        "  check FILE                         the editor's diagnostics: FILE:LINE:COL: error: message\n"
+        "  compile FILE.BAS [-o FILE.BIN]     SC750 compiler\n"
+        "  download FILE                      >BDS the program, then verify it (read back, P CHECKSUM)\n"
+        "  upload FILE                        <BDS the program into FILE\n"
+        "  vars dump FILE.VAR                 DUMP the variables (drive disabled) into FILE.VAR\n"
+        "  vars send FILE.VAR                 send each NAME value line at its prompt\n"
+        "  send LINE...                       send lines at the prompt, print the drive's answers\n"
+        "  run [LABEL] [--follow SECONDS]     RUN; with --follow print what the drive sends until the\n"
+        "                                     program ends (the --> prompt returns) or the time runs out\n"
+        "  stop                               ^X: stop motion and break the program\n"
+        "  record --vars V1,V2 --count N --interval MS [--then \"J 1000\"] --csv OUT.csv\n"
+        "                                     RECORD, trigger, PLAY, and write the scope's CSV\n"
+        "The default connection is --sim --drive bds5: a fresh simulated drive, faster than real time.\n"
+        "Exit status: 0 success, 1 a drive error, mismatch or diagnostic, 2 bad usage, 3 no drive answer.\n");
+}
+
+std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& error) {
+    CliOptions o;
+    int i = 0;
+    const auto value = [&](const QString& name) -> std::optional<QString> {
+        if (i + 1 >= args.size()) {
+            error = QStringLiteral("%1 needs a value").arg(name);
+            return std::nullopt;
+        }
+        return args[++i];
+    };
+    for (; i < args.size() && !isCommandWord(args[i]); ++i) {
+        const QString& a = args[i];
+        if (a == QLatin1String("--help") || a == QLatin1String("-h")) o.help = true;
+        else if (a == QLatin1String("--sim")) o.simulated = true;
+        else if (a == QLatin1String("--drive")) {
+            const auto v = value(a);
+            if (!v) return std::nullopt;
+            o.drive = v->toLower();
+        } else if (a == QLatin1String("--port")) {
+            const auto v = value(a);
+            if (!v) return std::nullopt;
+            o.port = *v;
+            o.simulated = false;
+        } else if (a == QLatin1String("--baud")) {
+            const auto v = value(a);
+            if (!v) return std::nullopt;
+            bool ok = false;
+            o.baud = v->toInt(&ok);
+            if (!ok || o.baud < 300 || o.baud > 115200) {
+                error = QStringLiteral("--baud %1 is not a baud rate").arg(*v);
+                return std::nullopt;
+            }
+        } else {
+            error = QStringLiteral("unknown option \"%1\"").arg(a);
+            return std::nullopt;
+        }
+    }
+    while (i < args.size()) {
+        const QString word = args[i++];
+        CliCommand c;
+        // Arguments run to the next command word (send takes everything up to one); vars takes exactly two,
+        // since its "send" would read as the next command.
+        QStringList rest;
+        if (word == QLatin1String("vars")) {
+            while (i < args.size() && rest.size() < 2) rest << args[i++];
+        }
+        while (word != QLatin1String("vars") && i < args.size() && !isCommandWord(args[i])) rest << args[i++];
+        if (word == QLatin1String("vars")) {
+            if (rest.size() != 2 || (rest[0] != QLatin1String("dump") && rest[0] != QLatin1String("send"))) {
+                error = QStringLiteral("vars needs \"dump FILE\" or \"send FILE\"");
+                return std::nullopt;
+            }
+            c.kind = rest[0] == QLatin1String("dump") ? CliCommand::Kind::VarsDump : CliCommand::Kind::VarsSend;
+            c.args = {rest[1]};
+        } else if (word == QLatin1String("run")) {
+            c.kind = CliCommand::Kind::Run;
+            for (int k = 0; k < rest.size(); ++k) {
+                if (rest[k] == QLatin1String("--follow") && k + 1 < rest.size()) c.followSeconds = rest[++k].toDouble();
+                else c.args << rest[k];
+            }
+            if (c.args.size() > 1) {
+                error = QStringLiteral("run takes one label");
+                return std::nullopt;
+            }
+        } else if (word == QLatin1String("record")) {
+            c.kind = CliCommand::Kind::Record;
+            for (int k = 0; k + 1 < rest.size(); k += 2) {
+                const QString& key = rest[k];
+                const QString& v = rest[k + 1];
+                if (key == QLatin1String("--vars")) c.recordVariables = v.toUpper().split(QLatin1Char(','), Qt::SkipEmptyParts);
+                else if (key == QLatin1String("--count")) c.recordCount = v.toInt();
+                else if (key == QLatin1String("--interval")) c.recordIntervalMs = v.toInt();
+                else if (key == QLatin1String("--then")) c.recordThen = v;
+                else if (key == QLatin1String("--csv")) c.csvPath = v;
+                else {
+                    error = QStringLiteral("record: unknown option \"%1\"").arg(key);
+                    return std::nullopt;
+                }
+            }
+            if (c.recordVariables.isEmpty() || c.recordCount <= 0 || c.recordIntervalMs <= 0 || c.csvPath.isEmpty()) {
+                error = QStringLiteral("record needs --vars, --count, --interval and --csv");
+                return std::nullopt;
+            }
+        } else {
+            static const std::pair<const char*, CliCommand::Kind> kSimple[] = {
+                {"check", CliCommand::Kind::Check},   {"compile", CliCommand::Kind::Compile},
+                {"download", CliCommand::Kind::Download}, {"upload", CliCommand::Kind::Upload},
+                {"send", CliCommand::Kind::Send},     {"stop", CliCommand::Kind::Stop}};
+            for (const auto& [name, kind] : kSimple)
+                if (word == QLatin1String(name)) c.kind = kind;
+            if (c.kind == CliCommand::Kind::Compile) {
+                const int o_at = int(rest.indexOf(QStringLiteral("-o")));
+                if (o_at >= 0 && o_at + 1 < rest.size()) {
+                    c.output = rest[o_at + 1];
+                    rest.remove(o_at, 2);
+                }
+            }
+            c.args = rest;
+            const bool needsOne = c.kind == CliCommand::Kind::Check || c.kind == CliCommand::Kind::Compile ||
+                                  c.kind == CliCommand::Kind::Download || c.kind == CliCommand::Kind::Upload;
+            if ((needsOne && c.args.size() != 1) || (c.kind == CliCommand::Kind::Send && c.args.isEmpty()) ||
+                (c.kind == CliCommand::Kind::Stop && !c.args.isEmpty())) {
+                error = QStringLiteral("%1: wrong number of arguments").arg(word);
+                return std::nullopt;
+            }
+        }
+        o.commands.push_back(c);
+    }
+    if (o.commands.empty() && !o.help) {
+        error = QStringLiteral("no command given");
+        return std::nullopt;
+    }
+    return o;
+}
+
+} // namespace app::cli

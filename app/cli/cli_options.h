@@ -1,0 +1,40 @@
+// servodesk-cli's command line: the connection (simulated drive or a port) and the commands to run, in
+// order, on one connection. Pure parsing; no I/O.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <vector>
+
+namespace app::cli {
+
+struct CliCommand {
+    enum class Kind { Check, Compile, Download, Upload, VarsDump, VarsSend, Send, Run, Stop, Record };
+    Kind kind = Kind::Send;
+    QStringList args;            // files, lines, label
+    double followSeconds = 0;    // run --follow
+    QStringList recordVariables; // record --vars
+    int recordCount = 0;
+    int recordIntervalMs = 0;
+    QString recordThen; // record --then "J 1000"
+    QString csvPath;    // record --csv
+    QString output;     // compile -o
+};
+
+struct CliOptions {
+    QString drive = QStringLiteral("bds5");
+    bool simulated = true; // --sim (the default) or --port
+    QString port;
+    int baud = 9600;
+    std::vector<CliCommand> commands;
+    bool help = false;
+};
+
+// Parses argv (without the program name). nullopt with error set when the words are wrong.
+std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& error);
+
+QString cliUsage();
+
+} // namespace app::cli
