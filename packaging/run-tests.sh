@@ -8,6 +8,8 @@ start=$(date +%s)
 bash "$here/build.sh"
 echo "build: $(( $(date +%s) - start )) s on $(nproc) cores"
 cd "$here/.."
+# The engines and protocol code under ASan + UBSan.
+bash packaging/run-sanitizers.sh
 # The .deb, installed with apt and run from its installed paths (as root only: it installs system-wide).
 if [[ $(id -u) -eq 0 ]]; then bash packaging/check-installed.sh build; fi
 ctest --preset default -j "$(nproc)"
