@@ -25,7 +25,8 @@ constexpr std::string_view kErrorPreamble = "\r\n\n";
 } // namespace
 
 Bds5Drive::Bds5Drive() {
-    m_executor.setLineHook([this](TaskLevel level, int line, std::string& out) { return beforeLine(level, line, out); });
+    m_executor.setLineHook(
+        [this](TaskLevel level, int line, std::string& out) { return beforeLine(level, line, out); });
 }
 
 void Bds5Drive::powerUp() {
@@ -35,7 +36,8 @@ void Bds5Drive::powerUp() {
     // Inputs are wires, not memory: a power cycle does not change what they read.
     std::vector<std::pair<std::string, std::int32_t>> inputs;
     for (int i = 1; i <= kInputCount; ++i) inputs.emplace_back("I" + std::to_string(i), 0);
-    for (const char* name : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"}) inputs.emplace_back(name, 0);
+    for (const char* name : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"})
+        inputs.emplace_back(name, 0);
     for (auto& [name, value] : inputs) value = m_state.variables.read(name).value_or(0);
     m_state.variables.powerUp();
     m_state.recorder.clear(); // the RECORD buffer is cleared at power-up (Table 3.2 notes)
@@ -60,8 +62,10 @@ void Bds5Drive::powerUp() {
         autobaud = true;
     }
     const bool abaud = switchOn("ABAUD", false);
-    if (abaud && addressId()) logError(m_state, 104);
-    else if (abaud) autobaud = true;
+    if (abaud && addressId())
+        logError(m_state, 104);
+    else if (abaud)
+        autobaud = true;
     if (!chooseBaudRate()) autobaud = true;
     m_port.powerUp(addressId(), autobaud, m_time);
     m_uart.setMuted(!m_port.transmits());
@@ -81,8 +85,7 @@ void Bds5Drive::establishCommunications() {
         sendError(Bds5Error{202, {}, 0}, "");
         return sendPrompt();
     }
-    if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::PowerUp);
-        line && !m_state.program.check()) {
+    if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::PowerUp); line && !m_state.program.check()) {
         transmit("EXECUTING POWER-UP LABEL\r\n"); // L4939-4944
         m_executor.start(*line, m_time);
         m_mode = Bds5DriveMode::Running;
@@ -91,9 +94,13 @@ void Bds5Drive::establishCommunications() {
     sendPrompt();
 }
 
-void Bds5Drive::receive(std::string_view bytes) { m_received.append(bytes); }
+void Bds5Drive::receive(std::string_view bytes) {
+    m_received.append(bytes);
+}
 
-std::string Bds5Drive::takeTransmitted() { return m_uart.takeSent(); }
+std::string Bds5Drive::takeTransmitted() {
+    return m_uart.takeSent();
+}
 
 void Bds5Drive::step(Microseconds dt) {
     m_time += dt;
@@ -112,7 +119,6 @@ void Bds5Drive::step(Microseconds dt) {
     m_uart.advance(dt);
     m_state.variables.set("SERIAL", m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)
 }
-
 
 // TMR1-TMR4 count down every millisecond and stop at 0 (L5775-5800).
 void Bds5Drive::tickTimers(Microseconds dt) {
@@ -148,8 +154,7 @@ bool Bds5Drive::input(int number) const {
 }
 
 bool Bds5Drive::output(int number) const {
-    return number >= 1 && number <= kOutputCount &&
-           m_state.variables.read("O" + std::to_string(number)).value_or(0);
+    return number >= 1 && number <= kOutputCount && m_state.variables.read("O" + std::to_string(number)).value_or(0);
 }
 
 void Bds5Drive::raiseFault(int code) {
@@ -163,17 +168,18 @@ void Bds5Drive::raiseFault(int code) {
         m_state.motion.stop(m_state.variables); // level 2: stop at AMAX (L2231)
     }
     const Bds5Error error{code, {}, 0};
-    if (m_executor.running()) programStopped(ProgramStop::Error, error); // faults break the program
-    else if (m_promptPending) m_heldErrors.push_back(error);
-    else sendError(error, kErrorPreamble);
+    if (m_executor.running())
+        programStopped(ProgramStop::Error, error); // faults break the program
+    else if (m_promptPending)
+        m_heldErrors.push_back(error);
+    else
+        sendError(error, kErrorPreamble);
 }
 
 void Bds5Drive::handleByte(char c) {
     switch (m_port.accept(c, m_time)) {
     case Bds5Port::Verdict::Drop: m_uart.setMuted(!m_port.transmits()); return;
-    case Bds5Port::Verdict::AutobaudDone:
-        m_uart.setMuted(!m_port.transmits());
-        return establishCommunications();
+    case Bds5Port::Verdict::AutobaudDone: m_uart.setMuted(!m_port.transmits()); return establishCommunications();
     case Bds5Port::Verdict::Woken: // "\A" answers CR LF and the prompt (L10015-10028)
         m_uart.setMuted(false);
         transmit(kCrLf);
@@ -248,7 +254,7 @@ void Bds5Drive::handleEscape() {
         }
         // The manual prints the leave-monitor answer as "<cr><lf>ENTER MONITOR MODE." (L9767-9768).
         transmit(messages ? "\r\nENTER MONITOR MODE." : "\r\n");
-        
+
         m_promptPending = false;
         m_mode = Bds5DriveMode::Running;
         m_executor.resume(m_time);
@@ -266,8 +272,7 @@ void Bds5Drive::handleEscape() {
 void Bds5Drive::handleBreakCharacter() {
     m_line.clear();
     m_state.motion.stop(m_state.variables); // ^X is S + B
-    if (m_mode == Bds5DriveMode::Running || m_mode == Bds5DriveMode::Monitor ||
-        m_mode == Bds5DriveMode::SingleStep) {
+    if (m_mode == Bds5DriveMode::Running || m_mode == Bds5DriveMode::Monitor || m_mode == Bds5DriveMode::SingleStep) {
         m_executor.stop();
         m_mode = Bds5DriveMode::Interactive;
         m_breakPending = false;
@@ -320,9 +325,7 @@ void Bds5Drive::interactiveLine(const std::string& line) {
 void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
     switch (outcome.flow) {
     case Flow::Run: return runProgram(outcome.target);
-    case Flow::Edit:
-        m_mode = Bds5DriveMode::Editor;
-        return editorReply(m_editor.enter());
+    case Flow::Edit: m_mode = Bds5DriveMode::Editor; return editorReply(m_editor.enter());
     case Flow::Load:
         // A password set with the editor's PASS must be given: ERR 110, program unchanged (L7123-7134).
         if (!m_state.program.password().empty() && outcome.text != m_state.program.password()) {
@@ -342,8 +345,6 @@ void Bds5Drive::applyTerminalFlow(const Outcome& outcome) {
     default: return sendPrompt();
     }
 }
-
-
 
 void Bds5Drive::loadLine(std::string line) {
     if (!m_loadStarted) { // program memory is erased on the first CR-terminated line (L9957)
@@ -371,7 +372,6 @@ void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
     m_promptPending = true;
 }
 
-
 void Bds5Drive::sendError(const Bds5Error& error, std::string_view preamble) {
     transmit(preamble);
     std::string text = formatError(error);
@@ -385,7 +385,7 @@ void Bds5Drive::sendHeldErrors(std::string_view preamble) {
 }
 
 void Bds5Drive::sendPrompt() {
-    m_port.setAxis(addressId()); // ADDR set from the terminal takes effect at once (L5424)
+    m_port.setAxis(addressId());                // ADDR set from the terminal takes effect at once (L5424)
     if (!m_uart.atLineStart()) transmit(kCrLf); // every prompt follows CR LF (L9609)
     const std::string prompt = m_mode == Bds5DriveMode::Monitor       ? std::string(kMonitorPrompt)
                                : m_mode == Bds5DriveMode::ProgramLoad ? std::string(kLoadPrompt)
@@ -395,7 +395,9 @@ void Bds5Drive::sendPrompt() {
     m_promptPending = true;
 }
 
-void Bds5Drive::transmit(std::string_view bytes) { m_uart.write(bytes); }
+void Bds5Drive::transmit(std::string_view bytes) {
+    m_uart.write(bytes);
+}
 
 // The rate is fixed at power-up from BAUD; false (ERR 103, history only) if BAUD is no valid rate.
 bool Bds5Drive::chooseBaudRate() {

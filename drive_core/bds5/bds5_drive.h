@@ -5,8 +5,8 @@
 
 #include "bds5_executor.h"
 #include "bds5_interpreter.h"
-#include "bds5_resident_editor.h"
 #include "bds5_port.h"
+#include "bds5_resident_editor.h"
 #include "bds5_uart.h"
 #include "drive_core/drive.h"
 
@@ -88,14 +88,14 @@ private:
     Bds5Executor m_executor{m_state, m_interpreter};
     Bds5ResidentEditor m_editor{m_state.program};
     Bds5DriveMode m_mode = Bds5DriveMode::Interactive;
-    std::string m_received;    // UART receive buffer, not yet processed
+    std::string m_received; // UART receive buffer, not yet processed
     Bds5Uart m_uart;
     Bds5Port m_port;
-    std::string m_line;        // the instruction being typed
+    std::string m_line; // the instruction being typed
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
     bool m_breakPending = false; // the program stopped while the monitor prompt was up
-    bool m_stepGranted = false; // single-step: Enter lets the shown line run
+    bool m_stepGranted = false;  // single-step: Enter lets the shown line run
     bool m_loadStarted = false;  // >BDS: the first line erases the program (L9957)
     bool m_powered = false;
     bool m_poweredBefore = false; // inputs keep their state across later power cycles

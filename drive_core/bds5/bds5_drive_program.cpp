@@ -22,7 +22,9 @@ char taskLetter(TaskLevel level) {
 }
 
 // Table 5.1 (L5763-5771): single-step prompts s-A> s-B> s-C> s-V> s--> s-*>.
-std::string stepPrompt(TaskLevel level) { return std::string("s-") + taskLetter(level) + ">"; }
+std::string stepPrompt(TaskLevel level) {
+    return std::string("s-") + taskLetter(level) + ">";
+}
 
 // Trace prefixes t.A. t.B. t.C. t.V. t... t.*. (lower case as in Table 5.1 and the COM documents).
 std::string tracePrefix(TaskLevel level) {
@@ -80,7 +82,7 @@ void Bds5Drive::runProgram(int label) {
         }
     }
     m_executor.start(line, m_time);
-    m_mode = Bds5DriveMode::Running; // no prompt while the program runs
+    m_mode = Bds5DriveMode::Running;  // no prompt while the program runs
     if (switchOn("MONITOR", false)) { // v3 MONITOR 1: monitor mode whenever a program starts (L9302)
         transmit(switchOn("MSG", true) ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "");
         m_mode = Bds5DriveMode::Monitor;
@@ -95,11 +97,13 @@ void Bds5Drive::runProgram() {
     std::string out;
     std::optional<Bds5Error> error;
     const ProgramStop stop = m_executor.advance(m_time, out, error);
-    if (m_mode == Bds5DriveMode::Running) transmit(out); // program prints are suppressed in monitor mode
+    if (m_mode == Bds5DriveMode::Running) transmit(out);              // program prints are suppressed in monitor mode
     if (!inputWaited && m_state.pendingInput) m_promptPending = true; // errors wait while INPUT does
     if (error && stop == ProgramStop::Running) { // a warning, or a break into ERROR$: the program goes on
-        if (m_promptPending) m_heldErrors.push_back(*error);
-        else sendError(*error, kErrorPreamble);
+        if (m_promptPending)
+            m_heldErrors.push_back(*error);
+        else
+            sendError(*error, kErrorPreamble);
     }
     if (stop != ProgramStop::Running) return programStopped(stop, error);
     if (m_executor.paused() && m_mode == Bds5DriveMode::Running) {
@@ -115,7 +119,7 @@ bool Bds5Drive::beforeLine(TaskLevel level, int line, std::string& out) {
         if (m_state.traceBuffer.size() > 100) m_state.traceBuffer.pop_front();
     }
     if (m_mode != Bds5DriveMode::Running) return true; // monitor mode: no display (chosen)
-    if (switchOn("SS", false)) { // with TRC also on, single-step wins (L1320)
+    if (switchOn("SS", false)) {                       // with TRC also on, single-step wins (L1320)
         if (std::exchange(m_stepGranted, false)) return true;
         out += m_state.program.line(line) + "\r\n";
         return false;
@@ -140,8 +144,10 @@ void Bds5Drive::monitorLine(const std::string& line) {
     auto lexed = lexLine(line);
     std::string out;
     Outcome outcome;
-    if (auto* e = std::get_if<Bds5Error>(&lexed)) outcome.error = *e;
-    else outcome = m_interpreter.execute(std::get<LexedLine>(lexed).entries, ExecContext{Origin::Monitor, 0}, out);
+    if (auto* e = std::get_if<Bds5Error>(&lexed))
+        outcome.error = *e;
+    else
+        outcome = m_interpreter.execute(std::get<LexedLine>(lexed).entries, ExecContext{Origin::Monitor, 0}, out);
     transmit(out);
     if (outcome.error) {
         logError(m_state, outcome.error->code);

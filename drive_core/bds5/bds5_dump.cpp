@@ -46,6 +46,8 @@ std::string dumpLoopGains(const Bds5State& state) {
     return out;
 }
 
-std::string dumpVersion() { return std::string(kFirmwareVersion) + "\r\n"; }
+std::string dumpVersion() {
+    return std::string(kFirmwareVersion) + "\r\n";
+}
 
 } // namespace drive_core::bds5

@@ -79,9 +79,9 @@ void Bds5Executor::launch(TaskLevel level, int line) {
 
 bool Bds5Executor::hasDedicatedTasks() const {
     const Bds5Program& p = m_state.program;
-    for (const auto l : {DedicatedLabel::AlarmA, DedicatedLabel::AlarmB, DedicatedLabel::AlarmC,
-                         DedicatedLabel::Variable, DedicatedLabel::Background, DedicatedLabel::Auto,
-                         DedicatedLabel::Manual})
+    for (const auto l :
+         {DedicatedLabel::AlarmA, DedicatedLabel::AlarmB, DedicatedLabel::AlarmC, DedicatedLabel::Variable,
+          DedicatedLabel::Background, DedicatedLabel::Auto, DedicatedLabel::Manual})
         if (p.dedicatedLine(l)) return true;
     return false;
 }
@@ -171,12 +171,13 @@ ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optio
         std::optional<TaskLevel> pick;
         for (std::size_t i = 0; i < kTaskCount && !pick; ++i) {
             const auto level = TaskLevel(i);
-            if (!multi && (level == TaskLevel::AlarmC || level == TaskLevel::Variable ||
-                           level == TaskLevel::Background))
+            if (!multi &&
+                (level == TaskLevel::AlarmC || level == TaskLevel::Variable || level == TaskLevel::Background))
                 continue;
             if (!idle(m_tasks[i])) pick = level;
         }
-        if (!pick && multi && !m_errorHandling && !task(TaskLevel::Background).active) { // background restarts whenever all idle
+        if (!pick && multi && !m_errorHandling &&
+            !task(TaskLevel::Background).active) { // background restarts whenever all idle
             if (const auto line = m_state.program.dedicatedLine(DedicatedLabel::Background)) {
                 launch(TaskLevel::Background, *line + 1);
                 pick = TaskLevel::Background;
@@ -250,7 +251,7 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
     if (printsText(lexed)) m_state.serialBusy = true;
     if (m_errorHandling && !lexed.entries.empty() && lexed.entries.front().text == "EN")
         return fail(Bds5Error{55, "EN", line}, error); // NOT FROM RECOVERY (L7301)
-    m_cpu += costOf(lexed); // lines follow one another without gaps: simulated time is exact
+    m_cpu += costOf(lexed);                            // lines follow one another without gaps: simulated time is exact
     ++t.pc;
     t.hold.reset();
     if (lexed.entries.empty()) {
@@ -341,7 +342,7 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
     case Flow::Break: return ProgramStop::Break;
     case Flow::Kill: return ProgramStop::Kill;
     case Flow::Stop: return ProgramStop::Running; // S in a program stops motion only (motion: issue 4)
-    case Flow::Run: { // v3: RUN inside a program restarts at the label (L9307)
+    case Flow::Run: {                             // v3: RUN inside a program restarts at the label (L9307)
         const auto target = o.target < 0 ? std::optional<int>() : program.labelLine(o.target);
         if (o.target >= 0 && !target) return fail(Bds5Error{70, std::to_string(o.target), line}, error);
         start(target, m_cpu);
@@ -395,11 +396,13 @@ std::optional<int> Bds5Executor::findBlockEnd(int from, bool toEndif) const {
         const LexedLine& lexed = program.lexed(l);
         if (lexed.entries.empty()) continue;
         const std::string& w = lexed.entries.front().text;
-        if (w == "IF") ++depth;
+        if (w == "IF")
+            ++depth;
         else if (w == "ENDIF") {
             if (depth == 0) return l;
             --depth;
-        } else if (depth == 0 && !toEndif && (w == "ELIF" || w == "ELSE")) return l;
+        } else if (depth == 0 && !toEndif && (w == "ELIF" || w == "ELSE"))
+            return l;
     }
     return std::nullopt;
 }

@@ -70,13 +70,13 @@ private:
         int pc = 0;
         std::vector<Frame> gosub;
         int ifDepth = 0;
-        Microseconds wakeAt{0};           // D: idle until then
-        std::optional<std::string> hold;  // H: idle until this switch ...
-        bool holdOn = true;               // ... is in this state
-        bool waitPrinter = false;         // a print waits for the serial port (pre-execution idle)
-        bool waitInput = false;           // INPUT: idle until the operator answers
-        bool waitMotion = false;          // a move waits for room in the motion buffer
-        std::optional<int> waitSegment;   // W n
+        Microseconds wakeAt{0};                 // D: idle until then
+        std::optional<std::string> hold;        // H: idle until this switch ...
+        bool holdOn = true;                     // ... is in this state
+        bool waitPrinter = false;               // a print waits for the serial port (pre-execution idle)
+        bool waitInput = false;                 // INPUT: idle until the operator answers
+        bool waitMotion = false;                // a move waits for room in the motion buffer
+        std::optional<int> waitSegment;         // W n
         std::optional<double> regulatedLeft_ms; // RD: external-clock milliseconds still to go
     };
 
@@ -100,8 +100,8 @@ private:
     Bds5Interpreter& m_interpreter;
     std::array<Task, kTaskCount> m_tasks;
     std::array<std::optional<bool>, 3> m_alarmLast; // last sampled state of each alarm's switch
-    bool m_cycleLast = false;                        // the CYCLE input, for AUTO$'s rising edge
-    std::optional<std::int32_t> m_pextLast;          // PEXT at the last regulated-dwell update
+    bool m_cycleLast = false;                       // the CYCLE input, for AUTO$'s rising edge
+    std::optional<std::int32_t> m_pextLast;         // PEXT at the last regulated-dwell update
     bool m_multitasking = false;
     bool m_errorHandling = false; // ERROR$ runs: every other task is suspended (L4956-4958)
     bool m_paused = false;

@@ -12,8 +12,12 @@ namespace {
 constexpr std::int64_t kMax = INT32_MAX;
 constexpr std::int64_t kMin = INT32_MIN;
 
-bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
-bool isAlnum(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; }
+bool isDigit(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
+bool isAlnum(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0;
+}
 
 struct Failure {
     int error;
@@ -51,9 +55,12 @@ private:
             if (op != '*' && op != '/' && op != '&') break;
             ++m_pos;
             const std::int64_t right = factor();
-            if (op == '*') left = checked(left * right);
-            else if (op == '&') left = left & right;
-            else left = divideRounded(left, right);
+            if (op == '*')
+                left = checked(left * right);
+            else if (op == '&')
+                left = left & right;
+            else
+                left = divideRounded(left, right);
         }
         return left;
     }

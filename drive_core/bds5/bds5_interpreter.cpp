@@ -131,11 +131,10 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     }
     // A print in a program idles until the previous one has left and no INPUT waits (L4637, L4797-4814);
     // this catches the prints inside ? and TIL, whose lines the executor cannot see as prints.
-    const bool printing = word == "P" || word == "PS" || word == "R" || word == "RS" || word == "PA" ||
-                          word == "PAS" || word == "INPUT" || (word == "ERR" && !(args.size() == 1 && args[0].text == "CLR"));
+    const bool printing = word == "P" || word == "PS" || word == "R" || word == "RS" || word == "PA" || word == "PAS" ||
+                          word == "INPUT" || (word == "ERR" && !(args.size() == 1 && args[0].text == "CLR"));
     if (printing && context.origin == Origin::Program) {
-        if ((m_state.serialBusy || m_state.pendingInput) && context.nested)
-            return {std::nullopt, Flow::WaitPrinter};
+        if ((m_state.serialBusy || m_state.pendingInput) && context.nested) return {std::nullopt, Flow::WaitPrinter};
         m_state.serialBusy = true;
     }
     // P/PS end with CR LF, R/RS with CR only (refresh a line), v3 PA/PAS with nothing (L4191-4378, L9305).
@@ -164,8 +163,8 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         if (m_state.enabled) { // EN clears the FAULT latch and the macro memory (L2111-2115, L2522)
             m_state.variables.set("FAULT", 0);
             m_state.motion.resetMacro();
-        }
-        else m_state.motion.halt();
+        } else
+            m_state.motion.halt();
         return {};
     }
     if (word == "RECORD" || word == "PLAY") return record(entries, out);
@@ -173,12 +172,12 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word == "TRECORD" || word == "TPLAY") return realTimeTrace(entries, out);
     if (word == "MOTOR") { // the motor/drive combination (factory use, L6923-6927); text chosen
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
-        out += "MOTOR: SERVODESK REFERENCE MOTOR, 12-BIT R/D, VMAX " +
-               std::to_string(readValue("VMAX").value_or(0)) + " RPM\r\n";
+        out += "MOTOR: SERVODESK REFERENCE MOTOR, 12-BIT R/D, VMAX " + std::to_string(readValue("VMAX").value_or(0)) +
+               " RPM\r\n";
         return {};
     }
-    for (const char* motionWord : {"J", "MA", "MI", "W", "NORM", "ZPE", "JT", "JF", "MRD", "CONTINUE", "MCA", "MCI",
-                                   "MCD", "MCGO"})
+    for (const char* motionWord :
+         {"J", "MA", "MI", "W", "NORM", "ZPE", "JT", "JF", "MRD", "CONTINUE", "MCA", "MCI", "MCD", "MCGO"})
         if (word == motionWord) return motionCommand(entries, context);
     if (word == "CLEARX") { // v3: zero X1-X750 and XS1-XS50 (L9308)
         for (int i = 1; i <= 250; ++i) m_state.variables.set("X" + std::to_string(i), 0);
@@ -211,10 +210,9 @@ Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const Exe
         const char* word;
         std::size_t least, most;
     };
-    static constexpr Arity kArity[] = {{"J", 1, 1},   {"MA", 1, 2},   {"MI", 1, 2},  {"JT", 2, 2},
-                                       {"JF", 2, 2},  {"MRD", 2, 3},  {"MCA", 1, 3}, {"MCI", 1, 3},
-                                       {"MCD", 1, 1}, {"MCGO", 0, 0}, {"W", 1, 1},   {"NORM", 1, 1},
-                                       {"ZPE", 0, 0}, {"CONTINUE", 0, 1}};
+    static constexpr Arity kArity[] = {{"J", 1, 1},   {"MA", 1, 2},   {"MI", 1, 2},  {"JT", 2, 2},      {"JF", 2, 2},
+                                       {"MRD", 2, 3}, {"MCA", 1, 3},  {"MCI", 1, 3}, {"MCD", 1, 1},     {"MCGO", 0, 0},
+                                       {"W", 1, 1},   {"NORM", 1, 1}, {"ZPE", 0, 0}, {"CONTINUE", 0, 1}};
     for (const Arity& a : kArity)
         if (word == a.word && (args.size() < a.least || args.size() > a.most))
             return {Bds5Error{82, joined(entries), 0}};
@@ -360,8 +358,10 @@ Outcome Bds5Interpreter::realTimeTrace(std::span<const Entry> entries, std::stri
     if (entries.front().text == "TRECORD") {
         if (args.size() != 1) return {Bds5Error{82, joined(entries), 0}};
         const std::string& what = args[0].text;
-        if (what == "START") m_state.traceBuffer.clear();
-        else if (what != "STOP" && what != "CONTINUE") return {Bds5Error{83, what, 0}};
+        if (what == "START")
+            m_state.traceBuffer.clear();
+        else if (what != "STOP" && what != "CONTINUE")
+            return {Bds5Error{83, what, 0}};
         m_state.traceRecording = what != "STOP";
         return {};
     }
@@ -376,9 +376,12 @@ Outcome Bds5Interpreter::realTimeTrace(std::span<const Entry> entries, std::stri
         numbers.push_back(*v);
     }
     if (args.size() > 2) return {Bds5Error{82, joined(entries), 0}};
-    if (numberAt == 1 && args[0].text == "NEWEST") first = std::max(1, size - numbers[0] + 1);
-    else if (numberAt == 1) last = std::min(size, int(numbers[0]));
-    else if (numbers.size() == 1) first = last = numbers[0];
+    if (numberAt == 1 && args[0].text == "NEWEST")
+        first = std::max(1, size - numbers[0] + 1);
+    else if (numberAt == 1)
+        last = std::min(size, int(numbers[0]));
+    else if (numbers.size() == 1)
+        first = last = numbers[0];
     else if (numbers.size() == 2) {
         first = numbers[0];
         last = std::min(size, int(numbers[1]));
@@ -442,8 +445,7 @@ Outcome Bds5Interpreter::jump(Flow flow, std::span<const Entry> entries) {
     return {std::nullopt, flow, r.value};
 }
 
-std::optional<bool> Bds5Interpreter::condition(std::span<const Entry> entries,
-                                               std::optional<Bds5Error>& error) const {
+std::optional<bool> Bds5Interpreter::condition(std::span<const Entry> entries, std::optional<Bds5Error>& error) const {
     if (entries.size() < 3) {
         error = Bds5Error{82, entries.empty() ? std::string() : entries.front().text, 0};
         return std::nullopt;
@@ -562,7 +564,8 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
     }
     if (next != entries.size()) return Bds5Error{82, entries[next].text, 0};
     if (name.starts_with("X(") && name.back() == ')') { // X(Xn) = expr (L9548)
-        const ExpressionResult index = evaluate(name.substr(2, name.size() - 3), [this](auto n) { return readValue(n); });
+        const ExpressionResult index =
+            evaluate(name.substr(2, name.size() - 3), [this](auto n) { return readValue(n); });
         if (index.error) return Bds5Error{index.error, name, 0};
         if (index.value < 1 || index.value > 250) return Bds5Error{85, name, 0};
         name = "X" + std::to_string(index.value);

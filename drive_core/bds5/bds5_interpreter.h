@@ -6,8 +6,8 @@
 #include "bds5_error.h"
 #include "bds5_lexer.h"
 #include "bds5_motion.h"
-#include "bds5_recorder.h"
 #include "bds5_program.h"
+#include "bds5_recorder.h"
 #include "bds5_variable_store.h"
 
 #include <deque>
@@ -23,7 +23,7 @@ struct InputRequest {
     int decimals = 0;         // the typed value is multiplied by 10^decimals
     std::int64_t minimum = 0; // limits after scaling, already clipped to the variable's own limits
     std::int64_t maximum = 0;
-    std::string text;         // the prompt text as printed (control characters expanded)
+    std::string text; // the prompt text as printed (control characters expanded)
 };
 
 // State the interpreter reads and changes; owned by Bds5Drive.
@@ -41,9 +41,9 @@ struct Bds5State {
     };
     std::deque<TraceEntry> traceBuffer;
     bool traceRecording = false;
-    std::deque<int> errorHistory; // ERR HIST, newest first, at most 20 entries (L6110-6148)
-    bool enabled = false;         // drive enabled (EN) / inhibited (DIS, K)
-    bool serialBusy = false;      // the UART is still sending: printing commands idle before running
+    std::deque<int> errorHistory;             // ERR HIST, newest first, at most 20 entries (L6110-6148)
+    bool enabled = false;                     // drive enabled (EN) / inhibited (DIS, K)
+    bool serialBusy = false;                  // the UART is still sending: printing commands idle before running
     std::optional<InputRequest> pendingInput; // an INPUT waits: every print idles (L4797-4814)
 };
 
@@ -63,28 +63,28 @@ struct ExecContext {
 
 // What the instruction asks of whoever runs it.
 enum class Flow {
-    Next,     // go on with the next line
-    Goto,     // target = label line's label
-    Gosub,    // target = label
-    Return,   // RET
-    End,      // END: this task ends
-    Break,    // B: all tasks stop, back to interactive
-    Kill,     // K: disable and break
-    Stop,     // S: stop motion (and, from monitor, break)
-    Repeat,   // TIL not yet satisfied: run this line again
-    Dwell,    // D: idle for target milliseconds
+    Next,           // go on with the next line
+    Goto,           // target = label line's label
+    Gosub,          // target = label
+    Return,         // RET
+    End,            // END: this task ends
+    Break,          // B: all tasks stop, back to interactive
+    Kill,           // K: disable and break
+    Stop,           // S: stop motion (and, from monitor, break)
+    Repeat,         // TIL not yet satisfied: run this line again
+    Dwell,          // D: idle for target milliseconds
     RegulatedDwell, // RD: idle for target milliseconds of the external input's clock
-    Hold,     // H: idle until switch `text` is ON (condition true) or OFF
-    Run,      // RUN [label]: target = label, or -1 for "enable multitasking only"
-    Load,     // >BDS [password]: text = password
-    List,     // <BDS
-    Edit,     // ED: enter the resident editor
-    Input,    // INPUT: the program waits for the operator (Outcome::input)
-    WaitMotion,  // MA/MI/MCGO with the motion buffer full: run this line again when there is room
-    WaitPrinter, // a print inside ? or TIL while the port is busy: run this line again when it is free
-    WaitSegment, // W n: idle until segment target of the last motion command has started
-    If,       // IF c: condition
-    Elif,     // ELIF c: condition
+    Hold,           // H: idle until switch `text` is ON (condition true) or OFF
+    Run,            // RUN [label]: target = label, or -1 for "enable multitasking only"
+    Load,           // >BDS [password]: text = password
+    List,           // <BDS
+    Edit,           // ED: enter the resident editor
+    Input,          // INPUT: the program waits for the operator (Outcome::input)
+    WaitMotion,     // MA/MI/MCGO with the motion buffer full: run this line again when there is room
+    WaitPrinter,    // a print inside ? or TIL while the port is busy: run this line again when it is free
+    WaitSegment,    // W n: idle until segment target of the last motion command has started
+    If,             // IF c: condition
+    Elif,           // ELIF c: condition
     Else,
     Endif,
 };

@@ -7,7 +7,9 @@
 namespace drive_core::bds5 {
 
 namespace {
-bool isBlank(char c) { return c == ' ' || c == '\t'; }
+bool isBlank(char c) {
+    return c == ' ' || c == '\t';
+}
 
 std::string upper(std::string_view s) {
     std::string out(s);

@@ -6,15 +6,17 @@
 
 namespace drive_core::bds5 {
 
-void Bds5Macro::reset() { *this = Bds5Macro{}; }
+void Bds5Macro::reset() {
+    *this = Bds5Macro{};
+}
 
 void Bds5Macro::add(double duration_s, double accel_cps2) {
     if (duration_s <= 0) return;
     m_segments.push_back({duration_s, accel_cps2, int(m_segments.size()) + 1});
 }
 
-int Bds5Macro::addSection(double distance, std::optional<double> first, std::optional<double> second,
-                          double acc, double dec) {
+int Bds5Macro::addSection(double distance, std::optional<double> first, std::optional<double> second, double acc,
+                          double dec) {
     if (m_closed) reset(); // a new definition after MCGO starts over (L2522)
     distance = std::round(distance);
     const double direction = distance < 0 ? -1.0 : 1.0;

@@ -12,7 +12,7 @@ namespace drive_core::bds5 {
 namespace cat = catalog::bds5;
 
 namespace {
-constexpr double kBasicPerCountPerSecond = 65.536;   // basic velocity: 1/65536 count per ms (§5.8)
+constexpr double kBasicPerCountPerSecond = 65.536;    // basic velocity: 1/65536 count per ms (§5.8)
 constexpr double kBasicPerCountPerSecond2 = 0.065536; // basic acceleration: 1/65536 count per ms²
 constexpr double kMaxRampSeconds = 30;                // an accel or decel segment longer is ERR 32
 
@@ -27,13 +27,15 @@ double Bds5Motion::rate(const Bds5VariableStore& vars, const char* name) const {
 }
 
 int Bds5Motion::checkCanMove(const Bds5VariableStore& vars, bool enabled) const {
-    if (!enabled) return 50;                                  // DRIVE INHIBITED
-    if (basic(vars, "MOTION") == 0) return 19;                // MOTION (HDWR LINE)
+    if (!enabled) return 50;                   // DRIVE INHIBITED
+    if (basic(vars, "MOTION") == 0) return 19; // MOTION (HDWR LINE)
     return 0;
 }
 
 // MRD, MA, JT, JF, MCA and NORM are refused with the gearbox on (ERR 56, L7303, L3023, L2483).
-int Bds5Motion::checkNoGear(const Bds5VariableStore& vars) const { return basic(vars, "GEAR") != 0 ? 56 : 0; }
+int Bds5Motion::checkNoGear(const Bds5VariableStore& vars) const {
+    return basic(vars, "GEAR") != 0 ? 56 : 0;
+}
 
 int Bds5Motion::jog(const Bds5VariableStore& vars, bool enabled, std::int64_t velocity) {
     if (const int e = checkCanMove(vars, enabled)) return e;
@@ -61,7 +63,7 @@ int Bds5Motion::move(const Bds5VariableStore& vars, bool enabled, std::int64_t t
     const double dec = rate(vars, "DEC");
     const double cps = double(v) / kBasicPerCountPerSecond;
     if (cps / acc > kMaxRampSeconds || cps / dec > kMaxRampSeconds) return 32; // checked before motion
-    if (m_profile.jogging()) return 58; // NOT w/JOGGING (L7307)
+    if (m_profile.jogging()) return 58;                                        // NOT w/JOGGING (L7307)
     if (m_profile.full()) return 30;
     const double end = incremental ? std::round(m_profile.finalPosition()) + double(target) : double(target);
     return m_profile.push({motion::MoveKind::Position, end, cps, acc, dec}) ? 0 : 30;
@@ -82,7 +84,7 @@ int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t 
     const double rampDistance = (v0 + v1) / 2 * rampTime;
     const double ahead = double(position) - m_profile.position();
     const double hold = to ? ahead - rampDistance : ahead; // JT: the ramp ends there; JF: it begins there
-    if (hold * direction < 0) return 42;                    // MOVE w/o TIME: already passed
+    if (hold * direction < 0) return 42;                   // MOVE w/o TIME: already passed
     if (rampTime > kMaxRampSeconds) return 32;
     std::vector<motion::Segment> segments{{hold / v0, 0, 1}, {rampTime, v1 > v0 ? rate : -rate, 2}};
     if (v1 != 0) segments.push_back({std::numeric_limits<double>::infinity(), 0, 3});
@@ -102,13 +104,17 @@ int Bds5Motion::moveRd(const Bds5VariableStore& vars, bool enabled, std::int64_t
     if (rdPosition < 0 || rdPosition >= perRev) return 83;
     const std::int64_t prd = ((std::llround(m_profile.position()) % perRev) + perRev) % perRev;
     std::int64_t d = rdPosition - prd;
-    if (direction > 0 && d < 0) d += perRev;
-    else if (direction < 0 && d > 0) d -= perRev;
-    else if (direction == 0 && d > perRev / 2) d -= perRev;
-    else if (direction == 0 && d <= -perRev / 2) d += perRev;
+    if (direction > 0 && d < 0)
+        d += perRev;
+    else if (direction < 0 && d > 0)
+        d -= perRev;
+    else if (direction == 0 && d > perRev / 2)
+        d -= perRev;
+    else if (direction == 0 && d <= -perRev / 2)
+        d += perRev;
     const double cps = double(velocity) / kBasicPerCountPerSecond;
-    m_profile.push({motion::MoveKind::Position, m_profile.position() + double(d), cps, rate(vars, "ACC"),
-                    rate(vars, "DEC")});
+    m_profile.push(
+        {motion::MoveKind::Position, m_profile.position() + double(d), cps, rate(vars, "ACC"), rate(vars, "DEC")});
     return 0;
 }
 
@@ -158,9 +164,13 @@ int Bds5Motion::macroGo(const Bds5VariableStore& vars, bool enabled) {
     return 0;
 }
 
-void Bds5Motion::stop(const Bds5VariableStore& vars) { m_profile.stop(rate(vars, "AMAX")); }
+void Bds5Motion::stop(const Bds5VariableStore& vars) {
+    m_profile.stop(rate(vars, "AMAX"));
+}
 
-void Bds5Motion::halt() { m_profile.stop(1e18); }
+void Bds5Motion::halt() {
+    m_profile.stop(1e18);
+}
 
 int Bds5Motion::normalize(std::int64_t position) {
     if (m_profile.moving()) return 57;

@@ -19,10 +19,10 @@ public:
     void setAxis(std::optional<char> axisId);
 
     enum class Verdict {
-        Process,         // give the byte to the line discipline
-        Drop,            // swallowed by the link layer
-        Woken,           // '\' + our ID: the drive answers with CR LF and its prompt
-        AutobaudDone,    // the first CR measured the rate: sign on now
+        Process,      // give the byte to the line discipline
+        Drop,         // swallowed by the link layer
+        Woken,        // '\' + our ID: the drive answers with CR LF and its prompt
+        AutobaudDone, // the first CR measured the rate: sign on now
     };
     Verdict accept(char c, Microseconds now);
 

@@ -51,7 +51,7 @@ public:
 
     // The checks RUN makes (labels used twice, labels after ERROR$); the first error with its line.
     std::optional<Bds5Error> check() const;
-    std::optional<int> labelLine(int label) const;            // line of "n$"
+    std::optional<int> labelLine(int label) const; // line of "n$"
     std::optional<int> dedicatedLine(DedicatedLabel which) const;
     std::optional<AlarmLabel> alarm(DedicatedLabel which) const; // A$, B$, C$
 

@@ -37,19 +37,13 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::enter() {
 
 Bds5ResidentEditor::Reply Bds5ResidentEditor::line(const std::string& text) {
     switch (m_mode) {
-    case Mode::Command:
-        return command(text);
-    case Mode::Insert:
-        return insertLine(text);
-    case Mode::Find:
-        return findAnswer(text);
-    case Mode::ChangeWhat:
-        return changeWhatAnswer(text);
-    case Mode::ChangeTo:
-        return changeToAnswer(text);
+    case Mode::Command: return command(text);
+    case Mode::Insert: return insertLine(text);
+    case Mode::Find: return findAnswer(text);
+    case Mode::ChangeWhat: return changeWhatAnswer(text);
+    case Mode::ChangeTo: return changeToAnswer(text);
     case Mode::OldPassword:
-    case Mode::NewPassword:
-        return passwordAnswer(text);
+    case Mode::NewPassword: return passwordAnswer(text);
     }
     return badEntry();
 }
@@ -66,18 +60,14 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::escape() {
 
 std::string Bds5ResidentEditor::prompt() const {
     switch (m_mode) {
-    case Mode::Insert:
-        return "i->";
-    case Mode::Find:
-        return "f->";
+    case Mode::Insert: return "i->";
+    case Mode::Find: return "f->";
     case Mode::ChangeWhat:
-    case Mode::ChangeTo:
-        return "c->";
+    case Mode::ChangeTo: return "c->";
     // chosen: the manual lists no password prompt; the question is answered at e->.
     case Mode::Command:
     case Mode::OldPassword:
-    case Mode::NewPassword:
-        return "e->";
+    case Mode::NewPassword: return "e->";
     }
     return "e->";
 }
@@ -107,8 +97,7 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::command(const std::string& text) {
     }
     if (word == "SIZE") {
         // "65 % LEFT" (L3696-3705): whole per cent of the ~16,000 characters still free, rounded down.
-        const std::size_t left =
-            (kProgramCapacityChars - m_program.sizeChars()) * 100 / kProgramCapacityChars;
+        const std::size_t left = (kProgramCapacityChars - m_program.sizeChars()) * 100 / kProgramCapacityChars;
         return toCommand(std::to_string(left) + " % LEFT\r\n");
     }
     if (word == "NEW") { // clears program, password and corruption (L3712, L3718-3720); chosen: no confirmation
@@ -133,8 +122,7 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::print(const LexedLine& cmd) {
     const auto last = args == 2 ? lineArgument(cmd.entries[2]) : first;
     if (!first || !last || *first > *last) return badEntry(); // chosen: a reversed range is a bad entry
     std::string out;
-    for (int n = *first; n <= *last; ++n)
-        out += printed(n);
+    for (int n = *first; n <= *last; ++n) out += printed(n);
     goTo(*last);
     return toCommand(out);
 }
@@ -157,8 +145,8 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::insert(const LexedLine& cmd) {
     if (cmd.entries.size() == 2) {
         const int end = m_program.lineCount() + 1;
         // chosen: I with the number one past the last line appends (the manual's own example is I 5).
-        const auto at = cmd.entries[1].text == std::to_string(end) ? std::optional<int>(end)
-                                                                   : lineArgument(cmd.entries[1]);
+        const auto at =
+            cmd.entries[1].text == std::to_string(end) ? std::optional<int>(end) : lineArgument(cmd.entries[1]);
         if (!at) return badEntry();
         goTo(*at);
     }
@@ -211,8 +199,7 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::changeWhatAnswer(const std::string
     else if (!m_findText)
         return toCommand();
     // chosen: a string not on the current line is reported at once, before CHANGE TO WHAT? is asked.
-    if (findNoCase(m_program.line(m_current), *m_findText) == std::string::npos)
-        return toCommand("NOT FOUND\r\n");
+    if (findNoCase(m_program.line(m_current), *m_findText) == std::string::npos) return toCommand("NOT FOUND\r\n");
     m_changeWhat = *m_findText;
     return ask(Mode::ChangeTo, m_changeTo ? "CHANGE TO WHAT? \"" + *m_changeTo + "\"?" : "CHANGE TO WHAT?");
 }
@@ -239,8 +226,7 @@ Bds5ResidentEditor::Reply Bds5ResidentEditor::passwordAnswer(const std::string& 
         return ask(Mode::NewPassword, "NEW PASSWORD?");
     }
     // chosen: a password >BDS could not be given as one entry (blanks, ';', '"') or too long: BAD ENTRY.
-    if (typed.size() > kMaxPasswordChars || typed.find_first_of(" \t;\"") != std::string::npos)
-        return badEntry();
+    if (typed.size() > kMaxPasswordChars || typed.find_first_of(" \t;\"") != std::string::npos) return badEntry();
     m_program.setPassword(typed);
     return toCommand();
 }
@@ -274,8 +260,7 @@ std::optional<int> Bds5ResidentEditor::lineArgument(const Entry& entry) const {
     if (entry.text == "END") return count;
     int n = 0;
     const auto [ptr, ec] = std::from_chars(entry.text.data(), entry.text.data() + entry.text.size(), n);
-    if (ec != std::errc{} || ptr != entry.text.data() + entry.text.size() || n < 1 || n > count)
-        return std::nullopt;
+    if (ec != std::errc{} || ptr != entry.text.data() + entry.text.size() || n < 1 || n > count) return std::nullopt;
     return n;
 }
 

@@ -52,6 +52,8 @@ void Bds5Uart::discard() {
     m_atLineStart = m_sent.empty() || m_sent.back() == '\n';
 }
 
-std::string Bds5Uart::takeSent() { return std::exchange(m_sent, {}); }
+std::string Bds5Uart::takeSent() {
+    return std::exchange(m_sent, {});
+}
 
 } // namespace drive_core::bds5

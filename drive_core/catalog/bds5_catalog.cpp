@@ -37,9 +37,8 @@ struct VariableIndex {
             else
                 families.push_back(&v);
         }
-        std::stable_sort(families.begin(), families.end(), [](const VariableInfo* a, const VariableInfo* b) {
-            return a->name.size() > b->name.size();
-        });
+        std::stable_sort(families.begin(), families.end(),
+                         [](const VariableInfo* a, const VariableInfo* b) { return a->name.size() > b->name.size(); });
     }
 };
 } // namespace
@@ -47,8 +46,7 @@ struct VariableIndex {
 std::optional<VariableRef> findVariable(std::string_view upperName) {
     static const VariableIndex kIndex;
     // Plain names first: "XS" is not X with index "S", and "TMR1" must not match a plain "TMR".
-    if (const auto it = kIndex.plain.find(upperName); it != kIndex.plain.end())
-        return VariableRef{it->second, 0};
+    if (const auto it = kIndex.plain.find(upperName); it != kIndex.plain.end()) return VariableRef{it->second, 0};
     // Indexed families: the longest stem followed by a decimal index in range.
     for (const VariableInfo* v : kIndex.families) {
         if (!upperName.starts_with(v->name)) continue;

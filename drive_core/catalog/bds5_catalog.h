@@ -21,7 +21,7 @@ enum class Severity {
 
 struct ErrorInfo {
     int code = 0;
-    std::string_view message;     // exactly as the drive prints it after the number, e.g. "ZERO DIVIDE"
+    std::string_view message; // exactly as the drive prints it after the number, e.g. "ZERO DIVIDE"
     Severity severity = Severity::Break;
     std::string_view meaning;     // the manual's explanation
     std::string_view remedy;      // what the manual says to do about it ("" when silent)
@@ -67,13 +67,24 @@ enum class UnitClass { None, Position, Velocity, Acceleration, Current, ExtPosit
 enum class Persistence { Volatile, Remembered };
 
 enum class VariableGroup {
-    Position, Velocity, Current, LoopGains, Limits, Units, Io, Switches, Communication, Timers, Record, User,
+    Position,
+    Velocity,
+    Current,
+    LoopGains,
+    Limits,
+    Units,
+    Io,
+    Switches,
+    Communication,
+    Timers,
+    Record,
+    User,
     Internal
 };
 
 struct VariableInfo {
-    std::string_view name;        // "VMAX"; indexed families give the stem: "X", "XS", "I", "O", "TMR"
-    int firstIndex = 0;           // indexed families: first and last index (X: 1..250); 0,0 otherwise
+    std::string_view name; // "VMAX"; indexed families give the stem: "X", "XS", "I", "O", "TMR"
+    int firstIndex = 0;    // indexed families: first and last index (X: 1..250); 0,0 otherwise
     int lastIndex = 0;
     std::string_view description; // the manual's words
     std::string_view units;       // as the manual prints them: "VEL", "ms", "counts", "" for none

@@ -8,8 +8,7 @@ namespace drive_core::catalog::bds5 {
 namespace {
 
 constexpr std::string_view kContactFactory = "Contact the factory.";
-constexpr std::string_view kInternal =
-    "This is an internal error. It breaks program execution and disables the BDS5.";
+constexpr std::string_view kInternal = "This is an internal error. It breaks program execution and disables the BDS5.";
 
 // One entry per error, packed by hand: clang-format would put every field on its own line.
 // clang-format off

@@ -38,8 +38,10 @@ std::optional<int> ProfileGenerator::push(const MoveRequest& move) {
     Motion m;
     m.id = m_nextId++;
     m.request = move;
-    if (!m_active) begin(std::move(m));
-    else m_pending.push_back(std::move(m));
+    if (!m_active)
+        begin(std::move(m));
+    else
+        m_pending.push_back(std::move(m));
     return m_nextId - 1;
 }
 
@@ -91,8 +93,10 @@ std::optional<int> ProfileGenerator::push(std::vector<Segment> segments, double 
     m.segments = std::move(segments);
     m.planned = true;
     m.endOffset = endOffset;
-    if (!m_active) begin(std::move(m));
-    else m_pending.push_back(std::move(m));
+    if (!m_active)
+        begin(std::move(m));
+    else
+        m_pending.push_back(std::move(m));
     return m_nextId - 1;
 }
 
@@ -111,11 +115,15 @@ void ProfileGenerator::stop(double decel_cps2) {
     m_active = std::move(m);
 }
 
-void ProfileGenerator::setPosition(double counts) { m_position = counts; }
+void ProfileGenerator::setPosition(double counts) {
+    m_position = counts;
+}
 
 void ProfileGenerator::begin(Motion motion) {
-    if (motion.planned) motion.request.target_counts = m_position + motion.endOffset;
-    else motion.segments = plan(m_position, motion.request);
+    if (motion.planned)
+        motion.request.target_counts = m_position + motion.endOffset;
+    else
+        motion.segments = plan(m_position, motion.request);
     motion.segmentStartPosition = m_position;
     motion.segmentStartVelocity = 0;
     if (motion.segments.empty()) { // nothing to do: the move is over as it starts
@@ -165,12 +173,14 @@ double ProfileGenerator::acceleration() const {
     return m_active->segments[m_active->index].accel_cps2;
 }
 
-int ProfileGenerator::segment() const { return m_active ? m_active->segments[m_active->index].number : 0; }
+int ProfileGenerator::segment() const {
+    return m_active ? m_active->segments[m_active->index].number : 0;
+}
 
 double ProfileGenerator::finalPosition() const {
     if (!m_pending.empty()) { // pending moves are position moves; planned ones end relative to the one before
-        double end = m_active && m_active->request.kind == MoveKind::Position ? m_active->request.target_counts
-                                                                               : m_position;
+        double end =
+            m_active && m_active->request.kind == MoveKind::Position ? m_active->request.target_counts : m_position;
         for (const Motion& p : m_pending) end = p.planned ? end + p.endOffset : p.request.target_counts;
         return end;
     }
@@ -180,9 +190,9 @@ double ProfileGenerator::finalPosition() const {
 
 bool ProfileGenerator::reached(int id, int segment) const {
     if (!m_active) return true;          // W never waits when motion has stopped
-    if (segment == 0) return false;       // W 0: until motion has stopped
-    if (m_active->id > id) return true;   // that motion is over, a later one runs
-    if (m_active->id < id) return false;  // that motion is still pending
+    if (segment == 0) return false;      // W 0: until motion has stopped
+    if (m_active->id > id) return true;  // that motion is over, a later one runs
+    if (m_active->id < id) return false; // that motion is still pending
     return this->segment() >= segment;
 }
 

@@ -17,17 +17,17 @@ enum class MoveKind {
 
 struct MoveRequest {
     MoveKind kind = MoveKind::Position;
-    double target_counts = 0;   // Position: the absolute end position
-    double velocity_cps = 0;    // Position: traverse speed (> 0); Jog: signed speed
-    double accel_cps2 = 1;      // > 0
-    double decel_cps2 = 1;      // > 0
+    double target_counts = 0; // Position: the absolute end position
+    double velocity_cps = 0;  // Position: traverse speed (> 0); Jog: signed speed
+    double accel_cps2 = 1;    // > 0
+    double decel_cps2 = 1;    // > 0
 };
 
 // One constant-acceleration piece of a profile.
 struct Segment {
     double duration_s = 0; // +infinity for a jog's endless traverse
     double accel_cps2 = 0;
-    int number = 1;        // the drive's segment number (BDS5 SEG, Table 5.2)
+    int number = 1; // the drive's segment number (BDS5 SEG, Table 5.2)
 };
 
 class ProfileGenerator {
@@ -79,10 +79,10 @@ private:
         int id = 0;
         MoveRequest request;
         std::vector<Segment> segments;
-        std::size_t index = 0;    // executing segment
-        bool planned = false;     // segments given: begin() must not plan a trapezoid
-        double endOffset = 0;     // planned position moves: the end relative to the start
-        double elapsed_s = 0;     // time into that segment
+        std::size_t index = 0; // executing segment
+        bool planned = false;  // segments given: begin() must not plan a trapezoid
+        double endOffset = 0;  // planned position moves: the end relative to the start
+        double elapsed_s = 0;  // time into that segment
         double segmentStartPosition = 0;
         double segmentStartVelocity = 0;
     };

@@ -21,8 +21,7 @@ const cat::VariableInfo& variable(std::string_view name) {
 }
 
 bool hasLowerCase(std::string_view s) {
-    return std::any_of(s.begin(), s.end(),
-                       [](char c) { return std::islower(static_cast<unsigned char>(c)); });
+    return std::any_of(s.begin(), s.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)); });
 }
 
 // Basic units from the standard user units (digest §5.8): RPM x 44739/10, RPM/s x 4474/1000.
@@ -59,12 +58,10 @@ TEST(Bds5CatalogErrors, HasExactlyTheHundredDistinctCodesInAscendingOrder) {
     const auto table = cat::errors();
     EXPECT_EQ(table.size(), 100u);
     std::set<int> codes;
-    for (const cat::ErrorInfo& e : table)
-        codes.insert(e.code);
+    for (const cat::ErrorInfo& e : table) codes.insert(e.code);
     EXPECT_EQ(codes.size(), table.size()) << "duplicate error codes";
-    EXPECT_TRUE(
-        std::is_sorted(table.begin(), table.end(),
-                       [](const cat::ErrorInfo& a, const cat::ErrorInfo& b) { return a.code < b.code; }));
+    EXPECT_TRUE(std::is_sorted(table.begin(), table.end(),
+                               [](const cat::ErrorInfo& a, const cat::ErrorInfo& b) { return a.code < b.code; }));
     EXPECT_EQ(*codes.begin(), 2);
     EXPECT_EQ(*codes.rbegin(), 255);
 }
@@ -181,16 +178,15 @@ TEST(Bds5CatalogCommands, PrintIsFoundBeforeTheEditorPrint) {
     EXPECT_EQ(p->minEntries, 1);
     EXPECT_EQ(p->maxEntries, 14);
     const auto table = cat::commands();
-    const auto editorPrint = std::find_if(table.begin(), table.end(), [](const cat::CommandInfo& c) {
-        return c.name == "P" && c.modes == cat::kEditor;
-    });
+    const auto editorPrint = std::find_if(
+        table.begin(), table.end(), [](const cat::CommandInfo& c) { return c.name == "P" && c.modes == cat::kEditor; });
     ASSERT_NE(editorPrint, table.end());
     EXPECT_EQ(editorPrint->maxEntries, 2); // P BEG END
 }
 
 TEST(Bds5CatalogCommands, SpecialFormsAndBlockIfArePresent) {
-    for (std::string_view name : {";", "$", "=", "?", "IF", "ELIF", "ELSE", "ENDIF", "ERR", "DUMP", "<BDS",
-                                  ">BDS", "PASS", "DEL", "SIZE", "NEW", "I", "F", "C"})
+    for (std::string_view name : {";", "$", "=", "?", "IF", "ELIF", "ELSE", "ENDIF", "ERR", "DUMP", "<BDS", ">BDS",
+                                  "PASS", "DEL", "SIZE", "NEW", "I", "F", "C"})
         EXPECT_NE(cat::findCommand(name), nullptr) << name;
     for (std::string_view name : {"IF", "ELIF", "ELSE", "ENDIF"})
         EXPECT_EQ(cat::findCommand(name)->modes, unsigned(cat::kProgram)) << name;
@@ -307,9 +303,8 @@ TEST(Bds5CatalogVariables, PowerUpValuesLieWithinTheirLimits) {
 }
 
 TEST(Bds5CatalogVariables, Table32PowerUpStateOfSwitches) {
-    for (std::string_view name :
-         {"CAP", "CLAMP", "DEP", "EXTLOOP", "FAULT", "GATEMODE", "GEAR", "O1", "O8", "PROP", "RAMP", "REG",
-          "ROTARY", "SS", "STATMODE", "TRC", "TQ", "WATCH", "ZERO"}) {
+    for (std::string_view name : {"CAP", "CLAMP", "DEP", "EXTLOOP", "FAULT", "GATEMODE", "GEAR", "O1", "O8", "PROP",
+                                  "RAMP", "REG", "ROTARY", "SS", "STATMODE", "TRC", "TQ", "WATCH", "ZERO"}) {
         const cat::VariableInfo& v = variable(name);
         EXPECT_EQ(v.powerUpValue, 0) << name;
         EXPECT_EQ(v.persistence, cat::Persistence::Volatile) << name;
@@ -326,16 +321,14 @@ TEST(Bds5CatalogVariables, Table32PowerUpStateOfSwitches) {
 
 TEST(Bds5CatalogVariables, DefaultsTheSimulatorNeeds) {
     const std::pair<std::string_view, std::int64_t> defaults[] = {
-        {"PROMPT", 1},    {"ECHO", 1},     {"MSG", 1},       {"ADDR", 0},      {"ABAUD", 0},
-        {"BAUD", 9600},   {"WTIME", 1000}, {"PNUM", 1},      {"PDEN", 1},      {"VNUM", 44739},
-        {"VDEN", 10},     {"ANUM", 4474},  {"ADEN", 1000},   {"INUM", 4095},   {"IDEN", 100},
-        {"VXNUM", 44739}, {"VXDEN", 10},   {"PXNUM", 1},     {"PXDEN", 1},     {"GEARI", 1},
-        {"GEARO", 3},     {"SCRV", 2},     {"REGKHZ", 1000}, {"PEMAX", 32767}, {"PECLAMP", 100},
-        {"PMAX", 100},    {"PMIN", -100},  {"KF", 0},        {"KC", 200},      {"OUT", 0},
-        {"PFB", 0},       {"TMR3", 0},     {"X250", 0},
+        {"PROMPT", 1},    {"ECHO", 1},    {"MSG", 1},     {"ADDR", 0},      {"ABAUD", 0},     {"BAUD", 9600},
+        {"WTIME", 1000},  {"PNUM", 1},    {"PDEN", 1},    {"VNUM", 44739},  {"VDEN", 10},     {"ANUM", 4474},
+        {"ADEN", 1000},   {"INUM", 4095}, {"IDEN", 100},  {"VXNUM", 44739}, {"VXDEN", 10},    {"PXNUM", 1},
+        {"PXDEN", 1},     {"GEARI", 1},   {"GEARO", 3},   {"SCRV", 2},      {"REGKHZ", 1000}, {"PEMAX", 32767},
+        {"PECLAMP", 100}, {"PMAX", 100},  {"PMIN", -100}, {"KF", 0},        {"KC", 200},      {"OUT", 0},
+        {"PFB", 0},       {"TMR3", 0},    {"X250", 0},
     };
-    for (const auto& [name, value] : defaults)
-        EXPECT_EQ(variable(name).powerUpValue, value) << name;
+    for (const auto& [name, value] : defaults) EXPECT_EQ(variable(name).powerUpValue, value) << name;
 }
 
 TEST(Bds5CatalogVariables, RpmValuesAreStoredInBasicUnits) {
@@ -376,8 +369,8 @@ TEST(Bds5CatalogVariables, ProgrammingConditionsFromTableE1) {
         EXPECT_EQ(variable(name).write, cat::WriteCondition::Disabled) << name;
     for (std::string_view name : {"VMAX", "IMAX", "ICONT", "AMPS", "VOLTS", "POLES", "FOLDT"})
         EXPECT_EQ(variable(name).write, cat::WriteCondition::Factory) << name;
-    for (std::string_view name : {"PCMD", "PE", "VFB", "VCMD", "ICMD", "IMON", "IN", "I3", "ACTIVE", "READY",
-                                  "REMOTE", "LSTERR", "SEG", "PRD", "CAM", "PCAM", "ON", "N", "SLIP"})
+    for (std::string_view name : {"PCMD", "PE", "VFB", "VCMD", "ICMD", "IMON", "IN", "I3", "ACTIVE", "READY", "REMOTE",
+                                  "LSTERR", "SEG", "PRD", "CAM", "PCAM", "ON", "N", "SLIP"})
         EXPECT_EQ(variable(name).write, cat::WriteCondition::Never) << name;
     for (std::string_view name : {"O1", "OUT", "X1", "XS1", "TMR4", "LSTLBL", "PEXT", "ILIM"})
         EXPECT_EQ(variable(name).write, cat::WriteCondition::Always) << name;

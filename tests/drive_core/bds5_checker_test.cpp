@@ -21,8 +21,8 @@ TEST(Bds5Checker, ACleanProgramHasNoDiagnostics) {
 }
 
 TEST(Bds5Checker, EachErrorAtItsLineAndEntry) {
-    const auto d = checkProgram({"1$", "FOO 3", "PROP 2", "P \"X", "X1 = (((1)))", "J 10;BAD", "GOTO 7", "PCMD=1",
-                                 "VMAX=1", "P X1[Q]"});
+    const auto d = checkProgram(
+        {"1$", "FOO 3", "PROP 2", "P \"X", "X1 = (((1)))", "J 10;BAD", "GOTO 7", "PCMD=1", "VMAX=1", "P X1[Q]"});
     ASSERT_EQ(codes(d), (std::vector<int>{80, 83, 88, 94, 83, 70, 81, 111, 79}));
     EXPECT_EQ(d[0].line, 2);
     EXPECT_EQ(d[0].message, "INVALID INSTRUCTION");

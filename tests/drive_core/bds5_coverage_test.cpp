@@ -17,7 +17,7 @@ namespace {
 struct ErrorCase {
     int code;
     std::vector<std::string> program; // downloaded first when not empty
-    std::vector<std::string> lines;    // then typed, one at a time
+    std::vector<std::string> lines;   // then typed, one at a time
     std::chrono::milliseconds run = 50ms;
 };
 
@@ -37,7 +37,7 @@ const std::vector<ErrorCase> kReachable = {
     {42, {}, {"EN", "MCI 1 1000 0"}},
     {43, {}, {"EN", "MCI 1000 100 50", "MCGO"}},
     {44, {}, {"EN", "MCI 1000 100 50", "MCD 100"}},
-    {47, {}, {"EN", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1",
+    {47, {}, {"EN",    "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1",
               "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1",
               "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1", "MCD 1"}},
     {48, {}, {"PLIM OFF", "EN", "MCI 10000 10 0", "MCGO", "MCI 10 10 0"}},
@@ -92,30 +92,52 @@ const std::vector<ErrorCase> kReachable = {
 const std::set<int> kInjected = {11, 12, 13, 14, 17, 20, 22, 25, 64, 97};
 
 // Not reachable in the simulator, with the reason.
-const std::map<int, const char*> kUnreachable = {
-    {2, "firmware self-test (CPU LED only)"}, {3, "firmware checksum (CPU LED only)"},
-    {4, "software watchdog (CPU LED only)"}, {5, "+5 V supply (CPU LED only)"},
-    {15, "compensation board missing"}, {18, "board ratings mismatch"}, {27, "R/D jumpers"},
-    {45, "MCA ACTIVE: the manual's description contradicts its name"},
-    {46, "MCI ACTIVE: the manual's description contradicts its name"},
-    {54, "the COM transcripts answer 63 where App. D suggests 54"}, {59, "NOT w/ROTARY: the seed names no command"},
-{84, "OUT OF BOUNDS: 83 is what the drive prints"},
-    {200, "foldback factory variables"}, {201, "induction-motor slip variables"}, {203, "internal"},
-    {204, "internal"}, {205, "internal"}, {206, "internal"}, {208, "internal"}, {209, "internal"},
-    {211, "internal"}, {212, "internal"}, {213, "internal"}, {214, "internal"}, {215, "internal"},
-    {216, "internal"}, {217, "internal"}, {218, "internal"}, {219, "internal"}, {255, "internal"}};
+const std::map<int, const char*> kUnreachable = {{2, "firmware self-test (CPU LED only)"},
+                                                 {3, "firmware checksum (CPU LED only)"},
+                                                 {4, "software watchdog (CPU LED only)"},
+                                                 {5, "+5 V supply (CPU LED only)"},
+                                                 {15, "compensation board missing"},
+                                                 {18, "board ratings mismatch"},
+                                                 {27, "R/D jumpers"},
+                                                 {45, "MCA ACTIVE: the manual's description contradicts its name"},
+                                                 {46, "MCI ACTIVE: the manual's description contradicts its name"},
+                                                 {54, "the COM transcripts answer 63 where App. D suggests 54"},
+                                                 {59, "NOT w/ROTARY: the seed names no command"},
+                                                 {84, "OUT OF BOUNDS: 83 is what the drive prints"},
+                                                 {200, "foldback factory variables"},
+                                                 {201, "induction-motor slip variables"},
+                                                 {203, "internal"},
+                                                 {204, "internal"},
+                                                 {205, "internal"},
+                                                 {206, "internal"},
+                                                 {208, "internal"},
+                                                 {209, "internal"},
+                                                 {211, "internal"},
+                                                 {212, "internal"},
+                                                 {213, "internal"},
+                                                 {214, "internal"},
+                                                 {215, "internal"},
+                                                 {216, "internal"},
+                                                 {217, "internal"},
+                                                 {218, "internal"},
+                                                 {219, "internal"},
+                                                 {255, "internal"}};
 
 std::string play(TestDrive& t, const ErrorCase& c) {
     if (!c.program.empty()) t.download(c.program);
     std::string out;
     for (const std::string& line : c.lines) {
-        if (line == "ESC") out += t.type("\x1b");
+        if (line == "ESC")
+            out += t.type("\x1b");
         else if (line == "POWER") {
             t.drive.powerUp();
             out += t.wait(20ms);
-        } else if (line == "WAIT") out += t.wait(c.run);
-        else if (line == "REMOTE_OFF") t.drive.setDedicatedInput("REMOTE", false);
-        else if (line == "MOTION_OFF") t.drive.setDedicatedInput("MOTION", false);
+        } else if (line == "WAIT")
+            out += t.wait(c.run);
+        else if (line == "REMOTE_OFF")
+            t.drive.setDedicatedInput("REMOTE", false);
+        else if (line == "MOTION_OFF")
+            t.drive.setDedicatedInput("MOTION", false);
         else if (line == "LIMIT_OFF") {
             t.drive.setDedicatedInput("LIMIT", false);
             out += t.wait(5ms);
@@ -123,7 +145,8 @@ std::string play(TestDrive& t, const ErrorCase& c) {
             out += t.type(">BDS\r");
             for (int i = 0; i < 240; ++i) out += t.type("; " + std::string(70, 'A') + "\r");
             out += t.type("\x1b");
-        } else out += t.type(line + (line.starts_with("\\") ? "" : "\r"), c.run);
+        } else
+            out += t.type(line + (line.starts_with("\\") ? "" : "\r"), c.run);
     }
     return out;
 }
@@ -170,18 +193,62 @@ TEST(Bds5Coverage, ErrorsAccountedForAndFigures) {
 
 namespace {
 // One use of each command, typed at --> unless it is program-only (then run from a program).
-const std::map<std::string, std::string> kSample = {
-    {";", "; COMMENT"}, {"$", "1$"}, {"?", "? 1 EQ 1 X1=1"}, {"B", "B"}, {"CONTINUE", "CONTINUE"},
-    {"DUMP", "DUMP VERSION"}, {"D", "D 1"}, {"DIS", "DIS"}, {"ED", "ED"}, {"ELIF", "ELIF 1 EQ 1"},
-    {"ELSE", "ELSE"}, {"EN", "EN"}, {"END", "END"}, {"ENDIF", "ENDIF"}, {"ERR", "ERR 50"}, {"GOSUB", "GOSUB 1"},
-    {"GOTO", "GOTO 1"}, {"H", "H I1 OFF"}, {"IF", "IF 1 EQ 1"}, {"INPUT", "INPUT \"X \" X1"}, {"J", "J 0"},
-    {"JF", "JF 100 10"}, {"JT", "JT 100 10"}, {"K", "K"}, {"MA", "MA 10"}, {"MCA", "MCA 10 10 0"},
-    {"MCD", "MCD 10"}, {"MCGO", "MCGO"}, {"MCI", "MCI 10 10 0"}, {"MI", "MI 10"}, {"MOTOR", "MOTOR"},
-    {"MRD", "MRD 10 10"}, {"NORM", "NORM 0"}, {"P", "P 1"}, {"PS", "PS 1"}, {"PLAY", "PLAY"}, {"R", "R 1"},
-    {"RD", "RD 10"}, {"RECORD", "RECORD 1 1 X1"}, {"RET", "RET"}, {"RS", "RS 1"}, {"RUN", "RUN"}, {"S", "S"},
-    {"TIL", "TIL 1 EQ 1"}, {"TUNE", "TUNE 10 1"}, {"W", "W 0"}, {"ZPE", "ZPE"}, {"<BDS", "<BDS"}, {">BDS", ">BDS"},
-    {"=", "X1=1"}, {"PA", "PA 1"}, {"PAS", "PAS 1"}, {"CLEARX", "CLEARX"}, {"RAND", "RAND 1"},
-    {"TRECORD", "TRECORD STOP"}, {"TPLAY", "TPLAY"}};
+const std::map<std::string, std::string> kSample = {{";", "; COMMENT"},
+                                                    {"$", "1$"},
+                                                    {"?", "? 1 EQ 1 X1=1"},
+                                                    {"B", "B"},
+                                                    {"CONTINUE", "CONTINUE"},
+                                                    {"DUMP", "DUMP VERSION"},
+                                                    {"D", "D 1"},
+                                                    {"DIS", "DIS"},
+                                                    {"ED", "ED"},
+                                                    {"ELIF", "ELIF 1 EQ 1"},
+                                                    {"ELSE", "ELSE"},
+                                                    {"EN", "EN"},
+                                                    {"END", "END"},
+                                                    {"ENDIF", "ENDIF"},
+                                                    {"ERR", "ERR 50"},
+                                                    {"GOSUB", "GOSUB 1"},
+                                                    {"GOTO", "GOTO 1"},
+                                                    {"H", "H I1 OFF"},
+                                                    {"IF", "IF 1 EQ 1"},
+                                                    {"INPUT", "INPUT \"X \" X1"},
+                                                    {"J", "J 0"},
+                                                    {"JF", "JF 100 10"},
+                                                    {"JT", "JT 100 10"},
+                                                    {"K", "K"},
+                                                    {"MA", "MA 10"},
+                                                    {"MCA", "MCA 10 10 0"},
+                                                    {"MCD", "MCD 10"},
+                                                    {"MCGO", "MCGO"},
+                                                    {"MCI", "MCI 10 10 0"},
+                                                    {"MI", "MI 10"},
+                                                    {"MOTOR", "MOTOR"},
+                                                    {"MRD", "MRD 10 10"},
+                                                    {"NORM", "NORM 0"},
+                                                    {"P", "P 1"},
+                                                    {"PS", "PS 1"},
+                                                    {"PLAY", "PLAY"},
+                                                    {"R", "R 1"},
+                                                    {"RD", "RD 10"},
+                                                    {"RECORD", "RECORD 1 1 X1"},
+                                                    {"RET", "RET"},
+                                                    {"RS", "RS 1"},
+                                                    {"RUN", "RUN"},
+                                                    {"S", "S"},
+                                                    {"TIL", "TIL 1 EQ 1"},
+                                                    {"TUNE", "TUNE 10 1"},
+                                                    {"W", "W 0"},
+                                                    {"ZPE", "ZPE"},
+                                                    {"<BDS", "<BDS"},
+                                                    {">BDS", ">BDS"},
+                                                    {"=", "X1=1"},
+                                                    {"PA", "PA 1"},
+                                                    {"PAS", "PAS 1"},
+                                                    {"CLEARX", "CLEARX"},
+                                                    {"RAND", "RAND 1"},
+                                                    {"TRECORD", "TRECORD STOP"},
+                                                    {"TPLAY", "TPLAY"}};
 } // namespace
 
 TEST(Bds5Coverage, CommandFigures) {
@@ -195,13 +262,16 @@ TEST(Bds5Coverage, CommandFigures) {
         ASSERT_NE(sample, kSample.end()) << "no sample for " << c.name;
         TestDrive t;
         std::string out;
-        if (c.modes & cat::kInteractive) out = t.type(sample->second + "\r", 20ms);
+        if (c.modes & cat::kInteractive)
+            out = t.type(sample->second + "\r", 20ms);
         else {
             t.download({"1$", sample->second, "B"});
             out = t.type("RUN 1\r", 20ms);
         }
-        if (out.find("ERR 80 ") == std::string::npos) ++implemented;
-        else notYet += " " + std::string(c.name);
+        if (out.find("ERR 80 ") == std::string::npos)
+            ++implemented;
+        else
+            notYet += " " + std::string(c.name);
     }
     std::printf("BDS5 commands: %d of %d simulated (plus the 8 editor commands); not yet:%s\n", implemented, total,
                 notYet.c_str());
@@ -217,14 +287,18 @@ TEST(Bds5Coverage, VariableFigures) {
         ++total;
         const std::string name = std::string(v.name) + (v.firstIndex ? std::to_string(v.firstIndex) : "");
         const std::string out = t.type("P " + name + "\r");
-        if (out.find("\aERR") == std::string::npos) ++readable;
-        else ADD_FAILURE() << name << ": " << out;
+        if (out.find("\aERR") == std::string::npos)
+            ++readable;
+        else
+            ADD_FAILURE() << name << ": " << out;
         if (v.write != cat::WriteCondition::Always || v.name == "PROMPT" || v.name == "ECHO" || v.name == "ADDR")
             continue;
         const std::string value = out.substr(out.find("\r\n") + 2, 12);
         const std::string back = t.type(name + "=" + value.substr(value.find_first_not_of(' ')) + "\r");
-        if (back.find("\aERR") == std::string::npos) ++writable;
-        else ADD_FAILURE() << name << " refuses its own value: " << back;
+        if (back.find("\aERR") == std::string::npos)
+            ++writable;
+        else
+            ADD_FAILURE() << name << " refuses its own value: " << back;
     }
     std::printf("BDS5 variables: %d of %d readable, %d writable back at their value\n", readable, total, writable);
     EXPECT_EQ(readable, total);

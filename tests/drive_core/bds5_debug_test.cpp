@@ -5,10 +5,21 @@ using namespace bds5_test;
 using drive_core::bds5::Bds5DriveMode;
 
 namespace {
-const std::vector<std::string> kNestedIf = {
-    "55$", "IF X1 GT 0", "  IF X2 GT 0", "    P \"BOTH X1 AND X2 > 0\"", "  ELSE", "    P \"ONLY X1 GT 0\"",
-    "  ENDIF", "ELSE", "  IF X2 GT 0", "    P \"ONLY X2 GT 0\"", "  ELSE", "    P \"NEITHER X1 NOR X2 > 0\"",
-    "  ENDIF", "ENDIF", "B"};
+const std::vector<std::string> kNestedIf = {"55$",
+                                            "IF X1 GT 0",
+                                            "  IF X2 GT 0",
+                                            "    P \"BOTH X1 AND X2 > 0\"",
+                                            "  ELSE",
+                                            "    P \"ONLY X1 GT 0\"",
+                                            "  ENDIF",
+                                            "ELSE",
+                                            "  IF X2 GT 0",
+                                            "    P \"ONLY X2 GT 0\"",
+                                            "  ELSE",
+                                            "    P \"NEITHER X1 NOR X2 > 0\"",
+                                            "  ENDIF",
+                                            "ENDIF",
+                                            "B"};
 } // namespace
 
 TEST(Bds5Input, DecimalScaling44) { // examples/bds5/35, L4428-4435
@@ -17,8 +28,7 @@ TEST(Bds5Input, DecimalScaling44) { // examples/bds5/35, L4428-4435
                 "P \"ACTUALLY, X1= \" X1", "B"});
     EXPECT_EQ(t.type("RUN 44\r", 20ms), "RUN 44\r\nENTER NEW POSITION: ");
     EXPECT_EQ(t.drive.mode(), Bds5DriveMode::Running);
-    EXPECT_EQ(t.type("1.234\r", 50ms),
-              "1.234\r\nNEW POSITION =        1.234\r\nACTUALLY, X1=         1234\r\n-->");
+    EXPECT_EQ(t.type("1.234\r", 50ms), "1.234\r\nNEW POSITION =        1.234\r\nACTUALLY, X1=         1234\r\n-->");
 }
 
 TEST(Bds5Input, LimitsAreEnforcedAndTheQuestionRepeats) {
@@ -68,19 +78,18 @@ TEST(Bds5Trace, ShowsOnlyTheExecutedLines) { // L5686-5712
     t.type("X1=1\r");
     t.type("X2=1\r");
     t.type("TRC ON\r");
-    EXPECT_EQ(t.type("RUN 55\r", 200ms),
-              "RUN 55\r\n"
-              "t...55$\r\n"
-              "t...IF X1 GT 0\r\n"
-              "t...  IF X2 GT 0\r\n"
-              "t...    P \"BOTH X1 AND X2 > 0\"\r\n"
-              "BOTH X1 AND X2 > 0\r\n"
-              "t...  ELSE\r\n"
-              "t...  ENDIF\r\n"
-              "t...ELSE\r\n"
-              "t...ENDIF\r\n"
-              "t...B\r\n"
-              "-->");
+    EXPECT_EQ(t.type("RUN 55\r", 200ms), "RUN 55\r\n"
+                                         "t...55$\r\n"
+                                         "t...IF X1 GT 0\r\n"
+                                         "t...  IF X2 GT 0\r\n"
+                                         "t...    P \"BOTH X1 AND X2 > 0\"\r\n"
+                                         "BOTH X1 AND X2 > 0\r\n"
+                                         "t...  ELSE\r\n"
+                                         "t...  ENDIF\r\n"
+                                         "t...ELSE\r\n"
+                                         "t...ENDIF\r\n"
+                                         "t...B\r\n"
+                                         "-->");
 }
 
 TEST(Bds5Trace, BackgroundLinesCarryTheirTask) { // L5728-5758

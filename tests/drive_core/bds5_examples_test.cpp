@@ -12,7 +12,8 @@ using namespace bds5_test;
 namespace {
 
 // Reads an example and repairs the OCR damage every example shares.
-std::vector<std::string> example(const std::string& file, const std::vector<std::pair<std::string, std::string>>& fixes = {}) {
+std::vector<std::string> example(const std::string& file,
+                                 const std::vector<std::pair<std::string, std::string>>& fixes = {}) {
     std::ifstream in(std::string(SERVODESK_EXAMPLES_DIR) + "/" + file);
     EXPECT_TRUE(in) << file;
     std::stringstream text;
@@ -51,7 +52,8 @@ TEST(Bds5Examples, MathPrecedenceAndRounding02) { // L1707-1749
     TestDrive t;
     std::string out;
     for (const std::string& line : example("02-math-precedence-rounding.bds")) out += t.type(line + "\r");
-    for (const char* v : {"           7\r\n", "           9\r\n", "         280\r\n", "         159\r\n", "         148\r\n"})
+    for (const char* v :
+         {"           7\r\n", "           9\r\n", "         280\r\n", "         159\r\n", "         148\r\n"})
         EXPECT_NE(out.find(v), std::string::npos) << v;
     EXPECT_EQ(t.type("P X3\r"), "P X3\r\n         600\r\n-->");
     EXPECT_EQ(out.find("ERR"), std::string::npos) << out;

@@ -21,7 +21,9 @@ std::int32_t value(std::string_view e) {
     EXPECT_EQ(r.error, 0) << e;
     return r.value;
 }
-int error(std::string_view e) { return evaluate(e, reader).error; }
+int error(std::string_view e) {
+    return evaluate(e, reader).error;
+}
 } // namespace
 
 TEST(Bds5Expression, ManualExamples) {
@@ -65,7 +67,9 @@ TEST(Bds5Expression, ErrorsAsTheDriveReportsThem) {
     EXPECT_EQ(error("X(X1+300)"), 85);
 }
 
-TEST(Bds5Expression, IndirectUserVariable) { EXPECT_EQ(value("X(X10)"), 30); }
+TEST(Bds5Expression, IndirectUserVariable) {
+    EXPECT_EQ(value("X(X10)"), 30);
+}
 
 TEST(Bds5Printer, FormatsOfTheManual) {
     EXPECT_EQ(formatValue(1962, "5"), " 1962");

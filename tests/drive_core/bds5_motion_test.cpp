@@ -78,9 +78,9 @@ TEST(Bds5Motion, StopDeceleratesAtAmaxAndJogZeroAtDec) {
 
 TEST(Bds5Motion, ProgramIdlesOnAFullBufferWhileBackgroundRuns) { // examples/bds5/41, L4645-4687
     TestDrive t;
-    t.download({"1$", "PLIM OFF", "EN", "MI 1000 10", "P \"FIRST MOVE PROCESSED\"", "MI 1000 10", "P \"SECOND MOVE PROCESSED\"",
-                "MI 1000 10", "P \"THIRD MOVE PROCESSED\"", "B", "BACKGROUND$", "P \"UPPER TASK IDLED\"", "D 250",
-                "END"});
+    t.download({"1$", "PLIM OFF", "EN", "MI 1000 10", "P \"FIRST MOVE PROCESSED\"", "MI 1000 10",
+                "P \"SECOND MOVE PROCESSED\"", "MI 1000 10", "P \"THIRD MOVE PROCESSED\"", "B", "BACKGROUND$",
+                "P \"UPPER TASK IDLED\"", "D 250", "END"});
     t.type("ACC=1000\r");
     t.type("DEC=1000\r");
     const std::string out = t.type("RUN 1\r", 4000ms);
@@ -93,7 +93,8 @@ TEST(Bds5Motion, ProgramIdlesOnAFullBufferWhileBackgroundRuns) { // examples/bds
 
 TEST(Bds5Motion, WaitZeroHoldsUntilMotionStops) { // examples/bds5/42, L4700-4750
     TestDrive t;
-    t.download({"1$", "PLIM OFF", "EN", "MI 2000 100", "P \"MOVE PROCESSED\"", "W 0", "P \"ALL MOTION STOPPED\"", "P PFB", "B"});
+    t.download({"1$", "PLIM OFF", "EN", "MI 2000 100", "P \"MOVE PROCESSED\"", "W 0", "P \"ALL MOTION STOPPED\"",
+                "P PFB", "B"});
     t.type("ACC=1000\r");
     t.type("DEC=1000\r");
     const std::string early = t.type("RUN 1\r", 150ms); // the move takes about 0.4 s
@@ -167,7 +168,7 @@ TEST(Bds5Macro, ErrorsOfTheManual) { // L7260-7279
     EXPECT_NE(t.type("MCI 1 1000 0\r").find("\aERR 42"), std::string::npos) << "too short for the speeds";
     t.type("DIS\r");
     t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
-    t.type("EN\r"); // enabling resets the macro memory
+    t.type("EN\r");       // enabling resets the macro memory
     EXPECT_NE(t.type("MCI 100\r").find("\aERR 41"), std::string::npos) << "no speed from rest";
 }
 

@@ -49,10 +49,9 @@ TEST_F(Bds5Program, GotoDemo) { // examples/bds5/21, L3770-3787
 }
 
 TEST_F(Bds5Program, GosubDemo) { // examples/bds5/22, L3803-3821
-    download({"4$", "GOSUB 5$", "P \"RETURNED FROM SUBROUTINE 5\"", "B", ";", "5$", "P \"EXECUTING SUBROUTINE 5\"",
-              "RET"});
-    EXPECT_EQ(type("RUN 4\r", 50ms),
-              "RUN 4\r\nEXECUTING SUBROUTINE 5\r\nRETURNED FROM SUBROUTINE 5\r\n-->");
+    download(
+        {"4$", "GOSUB 5$", "P \"RETURNED FROM SUBROUTINE 5\"", "B", ";", "5$", "P \"EXECUTING SUBROUTINE 5\"", "RET"});
+    EXPECT_EQ(type("RUN 4\r", 50ms), "RUN 4\r\nEXECUTING SUBROUTINE 5\r\nRETURNED FROM SUBROUTINE 5\r\n-->");
 }
 
 TEST_F(Bds5Program, NestedBlockIf) { // examples/bds5/29, L4074-4088
@@ -78,8 +77,8 @@ TEST_F(Bds5Program, DwellTakesSimulatedTime) { // examples/bds5/39, L4491-4509
 }
 
 TEST_F(Bds5Program, QuickIfAndTilCountALoop) {
-    download({"1$", "X1=0", "2$", "X1=X1+1", "? X1 LT 20 GOTO 2 : P \"DONE \" X1[2]", "X2=0",
-              "TIL X2 GE 5 X2=X2+1", "P X2[1]", "B"});
+    download({"1$", "X1=0", "2$", "X1=X1+1", "? X1 LT 20 GOTO 2 : P \"DONE \" X1[2]", "X2=0", "TIL X2 GE 5 X2=X2+1",
+              "P X2[1]", "B"});
     EXPECT_EQ(type("RUN 1\r", 500ms), "RUN 1\r\nDONE 20\r\n5\r\n-->");
 }
 
@@ -173,8 +172,7 @@ TEST_F(Bds5Program, CommandInMonitorModeWhileFaultWaitsIsIgnored) {
     type("RUN 6\r", 5ms);
     type("\x1b");
     drive.raiseFault(17);
-    EXPECT_EQ(type("P X1\r"),
-              "P X1\r\nERROR MSG WAITING--COMMAND IGNORED\r\n\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
+    EXPECT_EQ(type("P X1\r"), "P X1\r\nERROR MSG WAITING--COMMAND IGNORED\r\n\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
 }
 
 TEST_F(Bds5Program, PowerUpLabelRunsAtPowerUp) { // L4929-4944, examples/bds5/48

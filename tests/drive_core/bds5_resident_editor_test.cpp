@@ -97,8 +97,7 @@ TEST_F(Bds5Editor, EmptyLineGoesDownOneLineAndPrintsIt) { // L3512-3514
 TEST_F(Bds5Editor, ManualFindExample) { // L3572-3614
     download({kTestLine, "10$", "P \"EDITOR\"", "B"});
     edit();
-    EXPECT_EQ(enter("P BEG      ;USE P TO GO TO"),
-              "P BEG      ;USE P TO GO TO\r\n1 " + kTestLine + "\r\ne->");
+    EXPECT_EQ(enter("P BEG      ;USE P TO GO TO"), "P BEG      ;USE P TO GO TO\r\n1 " + kTestLine + "\r\ne->");
     EXPECT_EQ(enter("F          ;TOP AND SEARCH"), "F          ;TOP AND SEARCH\r\nFIND WHAT?\r\nf->");
     EXPECT_EQ(enter("EDITOR"), "EDITOR\r\n1 " + kTestLine + "\r\ne->"); // finds line 1
     EXPECT_EQ(enter("F"), "F\r\nFIND WHAT? EDITOR?\r\nf->");
@@ -257,8 +256,7 @@ TEST_F(Bds5Editor, EscapeAbortsEverySubModeWithoutChangingAnything) {
 TEST_F(Bds5Editor, RoundTripEditListAndRun) {
     edit();
     EXPECT_EQ(enter("I"), "I\r\ni->");
-    for (const std::string l : {"10$ ;GREETING", "P \"HELLO\"", "B"})
-        EXPECT_EQ(enter(l), l + "\r\ni->");
+    for (const std::string l : {"10$ ;GREETING", "P \"HELLO\"", "B"}) EXPECT_EQ(enter(l), l + "\r\ni->");
     EXPECT_EQ(type("\x1b"), "\r\ne->");
     EXPECT_EQ(enter("P 2"), "P 2\r\n2 P \"HELLO\"\r\ne->");
     EXPECT_EQ(enter("C"), "C\r\nCHANGE WHAT?\r\nc->");

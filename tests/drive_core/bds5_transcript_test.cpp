@@ -37,9 +37,13 @@ TEST_F(Bds5Transcript, PowerUpSendsSignOnThenPrompt) {
     EXPECT_TRUE(drive.promptPending());
 }
 
-TEST_F(Bds5Transcript, EmptyLineAnswersCrLfPrompt) { EXPECT_EQ(type("\r"), "\r\n-->"); }
+TEST_F(Bds5Transcript, EmptyLineAnswersCrLfPrompt) {
+    EXPECT_EQ(type("\r"), "\r\n-->");
+}
 
-TEST_F(Bds5Transcript, EscapeInInteractiveModeAnswersLikeCr) { EXPECT_EQ(type("\x1b"), "\r\n-->"); }
+TEST_F(Bds5Transcript, EscapeInInteractiveModeAnswersLikeCr) {
+    EXPECT_EQ(type("\x1b"), "\r\n-->");
+}
 
 TEST_F(Bds5Transcript, EveryCharacterIsEchoedAsItArrives) {
     EXPECT_EQ(type("P"), "P");
@@ -84,8 +88,8 @@ TEST_F(Bds5Transcript, ExpressionsFollowTheManualsExamples) {
 
 TEST_F(Bds5Transcript, UnknownCommandGivesErr80WithMessageAtColumn40) {
     const std::string entry = "ERR 80 'FOO'";
-    const std::string expected = "FOO\r\n\r\n\n\a" + entry + std::string(40 - entry.size(), ' ') +
-                                 "INVALID INSTRUCTION\r\n-->";
+    const std::string expected =
+        "FOO\r\n\r\n\n\a" + entry + std::string(40 - entry.size(), ' ') + "INVALID INSTRUCTION\r\n-->";
     EXPECT_EQ(type("FOO\r"), expected);
 }
 
@@ -108,8 +112,7 @@ TEST_F(Bds5Transcript, AsynchronousErrorIsHeldUntilCr) {
 
 TEST_F(Bds5Transcript, CommandTypedWhileErrorWaitsIsIgnored) {
     drive.raiseFault(17);
-    EXPECT_EQ(type("X1=5\r"),
-              "X1=5\r\nERROR MSG WAITING--COMMAND IGNORED\r\n\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
+    EXPECT_EQ(type("X1=5\r"), "X1=5\r\nERROR MSG WAITING--COMMAND IGNORED\r\n\r\n\n\aERR 17 FEEDBACK LOSS\r\n-->");
     EXPECT_EQ(type("P X1\r"), "P X1\r\n           0\r\n-->") << "the ignored assignment must not happen";
 }
 

@@ -9,7 +9,9 @@
 using namespace drive_core::motion;
 
 namespace {
-MoveRequest move(double target, double v, double a, double d) { return {MoveKind::Position, target, v, a, d}; }
+MoveRequest move(double target, double v, double a, double d) {
+    return {MoveKind::Position, target, v, a, d};
+}
 void run(ProfileGenerator& g, double seconds, double dt = 0.001) {
     for (double t = 0; t < seconds; t += dt) g.step(dt);
 }
