@@ -7,6 +7,7 @@
 
 #include "drive_core/catalog/bds5_catalog.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -72,6 +73,14 @@ std::vector<Diagnostic> checkProgram(const std::vector<std::string>& lines) {
             continue;
         }
         const LexedLine& l = std::get<LexedLine>(lexed);
+        // "J 10;BAD COMMENT": the ';' has no blank before it, so the comment is read as entries (L1355-1365).
+        // The drive then rejects whatever it makes of them; the editor names the cause.
+        const auto glued = std::find_if(l.entries.begin(), l.entries.end(),
+                                        [](const Entry& e) { return !e.quoted && e.text.find(';') != std::string::npos; });
+        if (glued != l.entries.end()) {
+            out.push_back(diagnose(n, text, Bds5Error{83, glued->text, n}));
+            continue;
+        }
         if (l.entries.empty() || Bds5Program::numericLabel(l)) continue;
         if (const auto dedicated = Bds5Program::dedicatedLabel(l)) {
             const bool alarm = *dedicated == DedicatedLabel::AlarmA || *dedicated == DedicatedLabel::AlarmB ||

@@ -64,3 +64,11 @@ TEST(Bds5Checker, AlarmLabelsNeedASwitch) {
 TEST(Bds5Checker, ProgramOnlyRulesApply) {
     EXPECT_EQ(codes(checkProgram({"1$", "ED"})), std::vector<int>{53});
 }
+
+TEST(Bds5Checker, CommentWithoutABlankBeforeItIsNamed) { // L1355-1365: "J 10;BAD COMMENT" is wrong
+    const auto d = checkProgram({"J 10;BAD COMMENT"});
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].code, 83);
+    EXPECT_EQ(d[0].entry, "10;BAD");
+    EXPECT_NE(d[0].message.find("space before it"), std::string::npos);
+}
