@@ -1,5 +1,8 @@
-// DocumentController: file actions with non-blocking dialogs.
+// DocumentController: file actions over the tabs, with non-blocking dialogs.
 #include "document_controller.h"
+
+#include "editor_tabs.h"
+#include "recent_files.h"
 
 #include "editor/program_editor.h"
 
@@ -7,124 +10,195 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QSettings>
 
 namespace app {
 
-namespace {
-const QString kFilter = QStringLiteral("BDS5 programs (*.bds *.BDS);;All files (*)");
-const QString kUntitled = QStringLiteral("untitled.bds");
-} // namespace
-
-DocumentController::DocumentController(editor::ProgramEditor& editor, QWidget* dialogParent)
-    : QObject(dialogParent), m_editor(editor), m_dialogParent(dialogParent), m_untitledName(kUntitled) {}
+DocumentController::DocumentController(EditorTabs& tabs, RecentFiles& recent, QWidget* dialogParent)
+    : QObject(dialogParent), m_tabs(tabs), m_recent(recent), m_dialogParent(dialogParent) {
+    connect(&m_tabs, &QTabWidget::tabCloseRequested, this, &DocumentController::closeTab);
+    connect(&m_tabs, &EditorTabs::currentEditorChanged, this, &DocumentController::documentChanged);
+}
 
 void DocumentController::openTemplate(const QString& path, const QString& displayName) {
-    if (const auto result = m_editor.loadFile(path); !result.ok) {
+    editor::ProgramEditor* editor = m_tabs.addEditor(displayName);
+    if (const auto result = editor->loadFile(path); !result.ok) {
         showError(result.message);
         return;
     }
-    m_editor.forgetFilePath();
-    m_untitledName = displayName;
+    editor->forgetFilePath();
+    m_tabs.refreshTab(editor);
     emit documentChanged();
 }
 
 void DocumentController::newDocument() {
-    whenSafeToDiscard([this] {
-        m_editor.newDocument();
-        m_untitledName = kUntitled;
+    m_tabs.addEditor(m_tabs.freeUntitledName(FileType::Program));
+    emit documentChanged();
+}
+
+void DocumentController::open() {
+    auto* dialog = new QFileDialog(m_dialogParent, tr("Open"), startDirectory(), openFilter());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setAcceptMode(QFileDialog::AcceptOpen);
+    dialog->setFileMode(QFileDialog::ExistingFiles);
+    connect(dialog, &QFileDialog::filesSelected, this, [this](const QStringList& paths) {
+        for (const QString& path : paths) openFile(path);
+    });
+    dialog->open();
+}
+
+bool DocumentController::openFile(const QString& path) {
+    if (const int index = m_tabs.indexOfFile(path); index >= 0) {
+        m_tabs.setCurrentIndex(index);
+        m_recent.add(path);
+        return true;
+    }
+    editor::ProgramEditor* editor = m_tabs.addEditor(QFileInfo(path).fileName());
+    if (const auto result = editor->loadFile(path); !result.ok) {
+        m_tabs.removeEditor(editor);
+        m_recent.remove(path);
+        showError(result.message);
+        return false;
+    }
+    m_tabs.refreshTab(editor);
+    m_recent.add(path);
+    rememberDirectory(path);
+    emit documentChanged();
+    emit statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+void DocumentController::save() {
+    saveThen(m_tabs.currentEditor(), [] {});
+}
+
+void DocumentController::saveAs() {
+    saveAsThen(m_tabs.currentEditor(), [] {});
+}
+
+void DocumentController::closeTab(int index) {
+    QPointer<editor::ProgramEditor> editor = m_tabs.editorAt(index);
+    if (!editor) return;
+    whenSafeToDiscard(editor, [this, editor] {
+        if (!editor) return;
+        m_tabs.removeEditor(editor);
+        if (m_tabs.count() == 0) newDocument();
         emit documentChanged();
     });
 }
 
-void DocumentController::open() {
-    whenSafeToDiscard([this] {
-        auto* dialog = new QFileDialog(m_dialogParent, tr("Open Program"), QDir::homePath(), kFilter);
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        dialog->setAcceptMode(QFileDialog::AcceptOpen);
-        dialog->setFileMode(QFileDialog::ExistingFile);
-        connect(dialog, &QFileDialog::fileSelected, this, &DocumentController::loadFrom);
-        dialog->open();
-    });
-}
-
-void DocumentController::save() {
-    saveThen([] {});
-}
-
-void DocumentController::saveAs() {
-    saveAsThen([] {});
+void DocumentController::closeCurrentTab() {
+    closeTab(m_tabs.currentIndex());
 }
 
 void DocumentController::whenSafeToDiscard(std::function<void()> proceed) {
-    if (!m_editor.isModified()) {
+    whenSafeToDiscard(m_tabs.currentEditor(), std::move(proceed));
+}
+
+void DocumentController::whenSafeToDiscard(editor::ProgramEditor* editor, std::function<void()> proceed) {
+    if (!editor || !editor->isModified()) {
         proceed();
         return;
     }
-    auto* box =
-        new QMessageBox(QMessageBox::Warning, tr("Unsaved Changes"),
-                        tr("%1 has unsaved changes. Save them?").arg(displayName()),
-                        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_dialogParent);
+    m_tabs.setCurrentWidget(editor); // show what the question is about
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Unsaved Changes"),
+                                tr("%1 has unsaved changes. Save them?").arg(m_tabs.displayName(editor)),
+                                QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_dialogParent);
+    box->setObjectName(QStringLiteral("unsavedChangesBox"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setDefaultButton(QMessageBox::Save);
-    connect(box, &QMessageBox::finished, this, [this, box, proceed = std::move(proceed)](int) {
+    QPointer<editor::ProgramEditor> guarded = editor;
+    connect(box, &QMessageBox::finished, this, [this, box, guarded, proceed = std::move(proceed)](int) {
         const QMessageBox::StandardButton answer = box->standardButton(box->clickedButton());
-        if (answer == QMessageBox::Save)
-            saveThen(proceed);
+        if (answer == QMessageBox::Save && guarded)
+            saveThen(guarded, proceed);
         else if (answer == QMessageBox::Discard)
             proceed();
     });
     box->open();
 }
 
-QString DocumentController::displayName() const {
-    return m_editor.filePath().isEmpty() ? m_untitledName : QFileInfo(m_editor.filePath()).fileName();
+void DocumentController::whenAllSafeToDiscard(std::function<void()> proceed) {
+    QList<QPointer<editor::ProgramEditor>> all;
+    for (auto* editor : m_tabs.editors()) all.append(editor);
+    askEach(std::move(all), std::move(proceed));
 }
 
-void DocumentController::saveThen(std::function<void()> then) {
-    if (m_editor.filePath().isEmpty()) {
-        saveAsThen(std::move(then));
+bool DocumentController::hasUnsavedChanges() const {
+    for (const auto* editor : m_tabs.editors())
+        if (editor->isModified()) return true;
+    return false;
+}
+
+QString DocumentController::displayName() const {
+    return m_tabs.displayName(m_tabs.currentEditor());
+}
+
+QString DocumentController::startDirectory() const {
+    if (const auto* editor = m_tabs.currentEditor(); editor && !editor->filePath().isEmpty())
+        return QFileInfo(editor->filePath()).absolutePath();
+    const QString last = QSettings().value(kLastDirKey).toString();
+    return !last.isEmpty() && QFileInfo(last).isDir() ? last : QDir::homePath();
+}
+
+void DocumentController::rememberDirectory(const QString& path) {
+    QSettings().setValue(kLastDirKey, QFileInfo(path).absolutePath());
+}
+
+void DocumentController::askEach(QList<QPointer<editor::ProgramEditor>> remaining, std::function<void()> proceed) {
+    while (!remaining.isEmpty() && (!remaining.first() || !remaining.first()->isModified())) remaining.removeFirst();
+    if (remaining.isEmpty()) {
+        proceed();
         return;
     }
-    if (writeTo(m_editor.filePath())) then();
+    editor::ProgramEditor* first = remaining.takeFirst();
+    whenSafeToDiscard(
+        first, [this, remaining = std::move(remaining), proceed = std::move(proceed)] { askEach(remaining, proceed); });
 }
 
-void DocumentController::saveAsThen(std::function<void()> then) {
+void DocumentController::saveThen(editor::ProgramEditor* editor, std::function<void()> then) {
+    if (!editor) return;
+    if (editor->filePath().isEmpty()) {
+        saveAsThen(editor, std::move(then));
+        return;
+    }
+    if (writeTo(editor, editor->filePath())) then();
+}
+
+void DocumentController::saveAsThen(editor::ProgramEditor* editor, std::function<void()> then) {
+    if (!editor) return;
+    const FileType type = m_tabs.fileType(editor);
     const QString start =
-        m_editor.filePath().isEmpty() ? QDir::home().filePath(m_untitledName) : m_editor.filePath();
-    auto* dialog = new QFileDialog(m_dialogParent, tr("Save Program As"), start, kFilter);
+        editor->filePath().isEmpty() ? QDir(startDirectory()).filePath(m_tabs.displayName(editor)) : editor->filePath();
+    auto* dialog =
+        new QFileDialog(m_dialogParent, tr("Save %1 As").arg(m_tabs.displayName(editor)), start, saveFilter(type));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setAcceptMode(QFileDialog::AcceptSave);
-    dialog->setDefaultSuffix(QStringLiteral("bds"));
-    connect(dialog, &QFileDialog::fileSelected, this, [this, then = std::move(then)](const QString& path) {
-        if (writeTo(path)) then();
+    dialog->setDefaultSuffix(defaultSuffix(type));
+    QPointer<editor::ProgramEditor> guarded = editor;
+    connect(dialog, &QFileDialog::fileSelected, this, [this, guarded, then = std::move(then)](const QString& path) {
+        if (guarded && writeTo(guarded, path)) then();
     });
     dialog->open();
 }
 
-bool DocumentController::writeTo(const QString& path) {
-    const auto result = m_editor.saveFile(path);
+bool DocumentController::writeTo(editor::ProgramEditor* editor, const QString& path) {
+    const auto result = editor->saveFile(path);
     if (!result.ok) {
         showError(result.message);
         return false;
     }
+    m_tabs.refreshTab(editor);
+    m_recent.add(path);
+    rememberDirectory(path);
+    emit fileSaved(editor, path);
     emit documentChanged();
     emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
     return true;
 }
 
-void DocumentController::loadFrom(const QString& path) {
-    const auto result = m_editor.loadFile(path);
-    if (!result.ok) {
-        showError(result.message);
-        return;
-    }
-    emit documentChanged();
-    emit statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
-}
-
 void DocumentController::showError(const QString& message) {
-    auto* box =
-        new QMessageBox(QMessageBox::Critical, tr("ServoDesk"), message, QMessageBox::Ok, m_dialogParent);
+    auto* box = new QMessageBox(QMessageBox::Critical, tr("ServoDesk"), message, QMessageBox::Ok, m_dialogParent);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
 }

@@ -1,9 +1,13 @@
-// DocumentController: the File menu's work on the program editor — new, open, save, save as, and asking
-// about unsaved edits. All dialogs are opened non-blocking (open(), never exec()); results arrive later.
-// GUI thread only.
+// DocumentController: the File menu's work on the editor tabs — new, open (with recent files), save,
+// save as, close tab, and asking about unsaved edits, per tab. All dialogs are opened non-blocking
+// (open(), never exec()); results arrive later. GUI thread only.
 #pragma once
 
+#include "file_types.h"
+
+#include <QList>
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <functional>
@@ -14,38 +18,62 @@ class ProgramEditor;
 
 namespace app {
 
+class EditorTabs;
+class RecentFiles;
+
 class DocumentController final : public QObject {
     Q_OBJECT
 public:
-    // dialogParent: the window the file and question dialogs belong to.
-    DocumentController(editor::ProgramEditor& editor, QWidget* dialogParent);
+    static inline const QString kLastDirKey = QStringLiteral("files/lastDir");
 
-    // Opens a read-only file (such as a resource) as an unnamed document called displayName.
+    // dialogParent: the window the file and question dialogs belong to.
+    DocumentController(EditorTabs& tabs, RecentFiles& recent, QWidget* dialogParent);
+
+    // Opens a read-only file (such as a resource) in a new tab as an unnamed document called displayName.
     void openTemplate(const QString& path, const QString& displayName);
+    // A new, empty tab ("untitled.bds", "untitled-2.bds", ...).
     void newDocument();
+    // Asks for files (several may be chosen) and opens each in its own tab.
     void open();
+    // Opens path in a new tab, or shows its tab when it is open already. False (and an error shown)
+    // when it cannot be read.
+    bool openFile(const QString& path);
+    // Save / Save As of the current tab.
     void save();
     void saveAs();
-    // Calls proceed once unsaved edits are saved or discarded; never if the user cancels.
-    void whenSafeToDiscard(std::function<void()> proceed);
+    // Closes a tab after asking about its unsaved edits. Closing the last tab leaves a new empty one.
+    // chosen: the window always has an editor, so "the current editor" is never null.
+    void closeTab(int index);
+    void closeCurrentTab();
 
-    // "hello.bds", "untitled.bds" or the file's name.
+    // Calls proceed once the current tab's unsaved edits are saved or discarded; never if the user cancels.
+    void whenSafeToDiscard(std::function<void()> proceed);
+    void whenSafeToDiscard(editor::ProgramEditor* editor, std::function<void()> proceed);
+    // The same for every tab, asking about each modified tab in turn (for quitting).
+    void whenAllSafeToDiscard(std::function<void()> proceed);
+    bool hasUnsavedChanges() const;
+
+    // The current tab's "hello.bds", "untitled.bds" or file name.
     QString displayName() const;
+    // Where file dialogs start: the current file's folder, else the last folder used, else home.
+    QString startDirectory() const;
+    void rememberDirectory(const QString& path);
 
 signals:
-    void documentChanged(); // a different document (or name) is in the editor
+    void documentChanged(); // a different document (or name) is in the current tab
     void statusMessage(const QString& message);
+    void fileSaved(editor::ProgramEditor* editor, const QString& path);
 
 private:
-    void saveThen(std::function<void()> then);
-    void saveAsThen(std::function<void()> then);
-    bool writeTo(const QString& path);
-    void loadFrom(const QString& path);
+    void askEach(QList<QPointer<editor::ProgramEditor>> remaining, std::function<void()> proceed);
+    void saveThen(editor::ProgramEditor* editor, std::function<void()> then);
+    void saveAsThen(editor::ProgramEditor* editor, std::function<void()> then);
+    bool writeTo(editor::ProgramEditor* editor, const QString& path);
     void showError(const QString& message);
 
-    editor::ProgramEditor& m_editor;
+    EditorTabs& m_tabs;
+    RecentFiles& m_recent;
     QWidget* m_dialogParent;
-    QString m_untitledName;
 };
 
 } // namespace app

@@ -23,6 +23,7 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
     connect(link, &serialport::Link::closed, this, [this] { emit connectedChanged(false); });
     connect(link, &serialport::Link::errorOccurred, this, &DriveConnection::errorOccurred);
     connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
+    connect(m_session.get(), &serialport::Bds5Session::rawSent, this, &DriveConnection::rawSent);
     connect(m_session.get(), &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
     connect(m_session.get(), &serialport::Bds5Session::stateChanged, this,
             &DriveConnection::sessionStateChanged);
@@ -39,12 +40,25 @@ QString DriveConnection::linkDescription() const {
 }
 
 void DriveConnection::sendRaw(const QByteArray& bytes) {
-    if (!isConnected()) {
-        if (!std::exchange(m_reportedNotConnected, true))
-            emit errorOccurred(tr("Not connected to a drive: nothing was sent. Use Drive > Connect."));
-        return;
-    }
+    if (!checkConnected()) return;
     m_session->sendRaw(bytes);
+}
+
+void DriveConnection::sendUrgent(const QByteArray& bytes) {
+    if (!checkConnected()) return;
+    m_session->sendUrgent(bytes);
+}
+
+quint64 DriveConnection::sendCommand(const QString& line) {
+    if (!checkConnected()) return 0;
+    return m_session->send(line);
+}
+
+bool DriveConnection::checkConnected() {
+    if (isConnected()) return true;
+    if (!std::exchange(m_reportedNotConnected, true))
+        emit errorOccurred(tr("Not connected to a drive: nothing was sent. Use Drive > Connect."));
+    return false;
 }
 
 void DriveConnection::teardown() {

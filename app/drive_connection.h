@@ -33,17 +33,23 @@ public:
 
     // Bytes typed by the user, passed to the drive untouched. Dropped (with errorOccurred) when closed.
     void sendRaw(const QByteArray& bytes);
+    // ^X or Esc from the user: written at once, ahead of anything queued (Bds5Session::sendUrgent).
+    void sendUrgent(const QByteArray& bytes);
+    // Queues one instruction at the drive's prompt (Bds5Session::send); 0 when not connected.
+    quint64 sendCommand(const QString& line);
 
 signals:
     void linkChanged(); // a new link was made or the link went away: refresh its description
     void connectedChanged(bool connected);
     void rawReceived(const QByteArray& bytes);
+    void rawSent(const QByteArray& bytes);
     void modeChanged(serialport::Bds5Mode mode, const QString& prompt);
     void sessionStateChanged(serialport::Bds5Session::State state);
     void errorOccurred(const QString& message);
 
 private:
     void teardown();
+    bool checkConnected(); // says "not connected" once, not on every key press
 
     ConnectionChoice m_choice;
     // Declared link first: the session refers to the link, so it must be destroyed before it.

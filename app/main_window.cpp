@@ -1,13 +1,24 @@
 // MainWindow: composition and wiring.
 #include "main_window.h"
 
+#include "capture_dock.h"
+#include "capture_log.h"
 #include "connection_dialog.h"
+#include "debug_highlighter.h"
 #include "document_controller.h"
+#include "editor_area.h"
+#include "drive_actions.h"
 #include "drive_connection.h"
+#include "help_browser.h"
+#include "options_controller.h"
+#include "program_controller.h"
 #include "terminal_dock.h"
 #include "terminal_widget.h"
+#include "variables_controller.h"
 
-#include "editor/bds5_lexer.h"
+#include "editor/diagnostics_status.h"
+#include "editor/keymap.h"
+#include "editor/outline_dock.h"
 #include "editor/program_editor.h"
 #include "resources/resources.h"
 #include "serialport/bds5_protocol.h"
@@ -29,29 +40,44 @@ constexpr double kTerminalShare = 0.40; // of the window height, on first show
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), m_editor(new editor::ProgramEditor(this)), m_terminalDock(new TerminalDock(this)),
-      m_connection(new DriveConnection(this)), m_documents(new DocumentController(*m_editor, this)) {
+    : QMainWindow(parent), m_editorArea(new EditorArea(this)), m_terminalDock(new TerminalDock(this)),
+      m_connection(new DriveConnection(this)), m_documents(m_editorArea->documents()) {
     resources::initialize();
     setObjectName(QStringLiteral("mainWindow"));
     resize(1200, 800);
-    m_editor->setLanguageLexer(new editor::Bds5Lexer);
-    setCentralWidget(m_editor);
+    setCentralWidget(m_editorArea);
     addDockWidget(Qt::BottomDockWidgetArea, m_terminalDock);
 
+    createDriveTools();
     createMenus();
     createStatusBar();
     wireConnection();
     connect(m_documents, &DocumentController::documentChanged, this, &MainWindow::updateTitle);
     connect(m_documents, &DocumentController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
-    connect(m_editor, &QsciScintilla::modificationChanged, this, &MainWindow::setWindowModified);
+    connect(m_editorArea, &EditorArea::currentDocumentChanged, this, &MainWindow::updateTitle);
+    connect(m_editorArea, &EditorArea::currentEditorChanged, this, &MainWindow::currentEditorChanged);
+    connect(m_editorArea, &EditorArea::currentEditorChanged, this, &MainWindow::followEditor);
+    connect(m_editorArea, &EditorArea::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
+    // Options > Editor keys switches the editor's keymap at once, and keeps editor/keymap in step.
+    connect(m_optionsController, &OptionsController::optionsChanged, this, [this](const AppOptions& options) {
+        const bool classic = options.keymap == AppOptions::Keymap::Classic;
+        QSettings().setValue(editor::Keymap::kSettingsKey, classic ? editor::Keymap::kClassic : editor::Keymap::kModern);
+        m_editorArea->reloadKeymap();
+    });
 
     m_documents->openTemplate(resources::kSampleProgram, QStringLiteral("hello.bds"));
+    followEditor(editor());
     updateTitle();
     terminal()->setFocus();
 }
 
 MainWindow::~MainWindow() = default;
+
+editor::ProgramEditor* MainWindow::editor() const {
+    return m_editorArea->currentEditor();
+}
 
 TerminalWidget* MainWindow::terminal() const {
     return m_terminalDock->terminal();
@@ -79,24 +105,60 @@ void MainWindow::restoreLayout() {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New"), QKeySequence::New, m_documents, &DocumentController::newDocument);
-    file->addAction(tr("&Open..."), QKeySequence::Open, m_documents, &DocumentController::open);
-    file->addAction(tr("&Save"), QKeySequence::Save, m_documents, &DocumentController::save);
-    file->addAction(tr("Save &As..."), QKeySequence::SaveAs, m_documents, &DocumentController::saveAs);
+    m_editorArea->fillFileMenu(file);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    m_editorArea->fillEditMenu(menuBar()->addMenu(tr("&Edit")));
+    QMenu* search = menuBar()->addMenu(tr("&Search"));
+    m_editorArea->fillSearchMenu(search);
+    search->addAction(m_outlineDock->goToLabelAction());
+    m_programController = new ProgramController(*this);
+    menuBar()->addMenu(m_programController->menu());
+    m_variablesController = new VariablesController(*this);
+    menuBar()->addMenu(m_variablesController->menu());
 
     QMenu* drive = menuBar()->addMenu(tr("&Drive"));
     drive->addAction(tr("&Connect..."), QKeySequence(tr("Ctrl+K")), this, &MainWindow::showConnectionDialog);
     m_disconnectAction = drive->addAction(tr("&Disconnect"), m_connection, &DriveConnection::disconnectDrive);
+    m_driveActions->addToMenu(drive);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* toggleTerminal = m_terminalDock->toggleViewAction();
     toggleTerminal->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
     view->addAction(toggleTerminal);
+    view->addAction(m_captureDock->toggleViewAction());
+    view->addAction(m_helpBrowser->toggleViewAction());
+    view->addAction(m_outlineDock->toggleViewAction());
+
+    m_captureDock->addToMenu(menuBar()->addMenu(tr("&Capture")));
+    m_optionsController->addToMenu(menuBar()->addMenu(tr("&Options")));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("BDS5 &Reference"), this, [this] { m_helpBrowser->showTopic(QStringLiteral("MA")); });
+    help->addAction(tr("&Introduction"), this, [this] { m_helpBrowser->showTopic(QStringLiteral("intro")); });
+    help->addAction(tr("Classic Editor &Keys"), m_editorArea, &EditorArea::showClassicKeys);
+    help->addSeparator();
     help->addAction(tr("&About ServoDesk"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::createDriveTools() {
+    m_driveActions = new DriveActions(*this);
+    addToolBar(m_driveActions->createDriveToolBar());
+    addToolBar(m_driveActions->createDebugToolBar());
+    m_debugHighlighter = new DebugHighlighter(*this, this);
+    m_captureLog = new CaptureLog(this);
+    connect(m_connection, &DriveConnection::rawReceived, m_captureLog, &CaptureLog::addReceived);
+    connect(m_connection, &DriveConnection::rawSent, m_captureLog, &CaptureLog::addSent);
+    m_captureDock = new CaptureDock(*m_captureLog, this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_captureDock);
+    tabifyDockWidget(m_terminalDock, m_captureDock);
+    m_terminalDock->raise();
+    m_optionsController = new OptionsController(*this, *m_debugHighlighter);
+    m_helpBrowser = new HelpBrowser(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_helpBrowser);
+    m_helpBrowser->hide();
+    m_outlineDock = new editor::OutlineDock(this); // labels and tasks of the current program, Go to label
+    addDockWidget(Qt::RightDockWidgetArea, m_outlineDock);
 }
 
 void MainWindow::createStatusBar() {
@@ -122,12 +184,16 @@ void MainWindow::createStatusBar() {
     m_portLabel = makeLabel(QStringLiteral("portLabel"), tr("Port and baud rate"));
     m_modeLabel = makeLabel(QStringLiteral("modeLabel"), tr("The drive's mode, from its last prompt"));
     m_stateLabel = makeLabel(QStringLiteral("stateLabel"), tr("Connection state"));
+    m_editorArea->installStatusWidgets(statusBar());
+    m_diagnosticsStatus = new editor::DiagnosticsStatus(this); // the drive's errors in the current program
+    statusBar()->insertPermanentWidget(0, m_diagnosticsStatus);
     updateLinkStatus();
 }
 
 void MainWindow::wireConnection() {
     TerminalWidget* term = terminal();
     connect(term, &TerminalWidget::bytesTyped, m_connection, &DriveConnection::sendRaw);
+    connect(term, &TerminalWidget::urgentBytesTyped, m_connection, &DriveConnection::sendUrgent);
     connect(m_connection, &DriveConnection::rawReceived, term, &TerminalWidget::displayBytes);
     connect(m_connection, &DriveConnection::modeChanged, this, &MainWindow::showMode);
     connect(m_connection, &DriveConnection::linkChanged, this, &MainWindow::updateLinkStatus);
@@ -140,9 +206,18 @@ void MainWindow::wireConnection() {
     connect(m_connection, &DriveConnection::errorOccurred, this, &MainWindow::showLinkError);
 }
 
+void MainWindow::followEditor(editor::ProgramEditor* current) {
+    m_outlineDock->setEditor(current);
+    m_diagnosticsStatus->setEditor(current);
+    // F1 in the editor shows a popup and opens the reference at the same topic.
+    if (current)
+        connect(current, &editor::ProgramEditor::helpRequested, m_helpBrowser, &HelpBrowser::showTopic,
+                Qt::UniqueConnection);
+}
+
 void MainWindow::updateTitle() {
     setWindowTitle(tr("%1[*] \u2014 ServoDesk").arg(m_documents->displayName()));
-    setWindowModified(m_editor->isModified());
+    setWindowModified(editor() && editor()->isModified());
 }
 
 void MainWindow::updateLinkStatus() {
@@ -205,9 +280,9 @@ void MainWindow::showAbout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (m_editor->isModified() && !m_closeConfirmed) {
+    if (m_editorArea->hasUnsavedChanges() && !m_closeConfirmed) {
         event->ignore();
-        m_documents->whenSafeToDiscard([this] {
+        m_editorArea->whenSafeToClose([this] {
             m_closeConfirmed = true;
             close();
         });

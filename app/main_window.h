@@ -11,14 +11,25 @@
 class QLabel;
 
 namespace editor {
+class DiagnosticsStatus;
+class OutlineDock;
 class ProgramEditor;
 }
 
 namespace app {
 
+class CaptureDock;
+class CaptureLog;
 class ConnectionDialog;
+class DebugHighlighter;
 class DocumentController;
+class EditorArea;
+class DriveActions;
 class DriveConnection;
+class HelpBrowser;
+class OptionsController;
+class ProgramController;
+class VariablesController;
 class TerminalDock;
 class TerminalWidget;
 
@@ -35,10 +46,28 @@ public:
     // Puts back the window geometry and dock layout of the last session, if any.
     void restoreLayout();
 
-    editor::ProgramEditor* editor() const { return m_editor; }
+    // The current tab's editor (never null). Ask again each time: tabs come and go; follow
+    // currentEditorChanged, or editorArea()->tabs() for every open editor.
+    editor::ProgramEditor* editor() const;
+    EditorArea* editorArea() const { return m_editorArea; }
     TerminalDock* terminalDock() const { return m_terminalDock; }
     TerminalWidget* terminal() const;
     DriveConnection& connection() const { return *m_connection; }
+    DriveActions& driveActions() const { return *m_driveActions; }
+    DebugHighlighter& debugHighlighter() const { return *m_debugHighlighter; }
+    CaptureLog& captureLog() const { return *m_captureLog; }
+    CaptureDock* captureDock() const { return m_captureDock; }
+    OptionsController& optionsController() const { return *m_optionsController; }
+    // The BDS5 reference dock; helpBrowser()->showTopic("VMAX") opens it at a topic (the editor's F1).
+    HelpBrowser* helpBrowser() const { return m_helpBrowser; }
+    // The Outline dock (labels and tasks of the current program; Search > Go to Label).
+    editor::OutlineDock* outlineDock() const { return m_outlineDock; }
+    // The Program and Variables menus (downloads, uploads, verify, .VAR transfers).
+    ProgramController& programController() const { return *m_programController; }
+    VariablesController& variablesController() const { return *m_variablesController; }
+
+signals:
+    void currentEditorChanged(editor::ProgramEditor* editor);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -46,8 +75,10 @@ protected:
 
 private:
     void createMenus();
+    void createDriveTools(); // drive and debug toolbars, capture, options, help (before createMenus)
     void createStatusBar();
     void wireConnection();
+    void followEditor(editor::ProgramEditor* current); // outline, diagnostics count, F1 -> reference
     void updateTitle();
     void updateLinkStatus();
     void showMode(serialport::Bds5Mode mode, const QString& prompt);
@@ -55,10 +86,20 @@ private:
     void showLinkError(const QString& message);
     void showAbout();
 
-    editor::ProgramEditor* m_editor;
+    EditorArea* m_editorArea;
     TerminalDock* m_terminalDock;
     DriveConnection* m_connection;
     DocumentController* m_documents;
+    DriveActions* m_driveActions = nullptr;
+    DebugHighlighter* m_debugHighlighter = nullptr;
+    CaptureLog* m_captureLog = nullptr;
+    CaptureDock* m_captureDock = nullptr;
+    OptionsController* m_optionsController = nullptr;
+    HelpBrowser* m_helpBrowser = nullptr;
+    editor::OutlineDock* m_outlineDock = nullptr;
+    editor::DiagnosticsStatus* m_diagnosticsStatus = nullptr;
+    ProgramController* m_programController = nullptr;
+    VariablesController* m_variablesController = nullptr;
     QLabel* m_linkLabel = nullptr;
     QLabel* m_portLabel = nullptr;
     QLabel* m_modeLabel = nullptr;

@@ -3,9 +3,13 @@
 
 #include "connection_dialog.h"
 #include "drive_connection.h"
+#include "drive_tour_steps.h"
+#include "editor_tour_steps.h"
 #include "main_window.h"
+#include "tabs_tour_steps.h"
 #include "terminal_dock.h"
 #include "terminal_widget.h"
+#include "transfer_tour_steps.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"
@@ -77,6 +81,10 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
                          [dialog] {
                              if (*dialog) (*dialog)->reject();
                          }});
+    for (Step& step : transferTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : tabsTourSteps(m_window, m_outputDir)) steps.push_back(std::move(step));
+    for (Step& step : editorTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : driveTourSteps(m_window)) steps.push_back(std::move(step));
     return steps;
 }
 

@@ -21,8 +21,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     app::cli::CliRunner runner(*options);
-    QObject::connect(&runner, &app::cli::CliRunner::done, &application, &QCoreApplication::exit,
-                     Qt::QueuedConnection);
+    QObject::connect(&runner, &app::cli::CliRunner::done, &application, &QCoreApplication::exit, Qt::QueuedConnection);
     runner.start();
     return QCoreApplication::exec();
 }

@@ -15,7 +15,9 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 
-void onSignal(int) { g_stop.store(true); }
+void onSignal(int) {
+    g_stop.store(true);
+}
 
 int usage(int code) {
     std::fprintf(code ? stderr : stdout,
@@ -36,11 +38,16 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         const bool hasValue = i + 1 < argc;
-        if (arg == "--drive" && hasValue) driveName = argv[++i];
-        else if (arg == "--pty") pty = true;
-        else if (arg == "--stdio") stdio = true;
-        else if (arg == "--speed" && hasValue) options.speedFactor = std::atof(argv[++i]);
-        else if (arg == "--help" || arg == "-h") return usage(0);
+        if (arg == "--drive" && hasValue)
+            driveName = argv[++i];
+        else if (arg == "--pty")
+            pty = true;
+        else if (arg == "--stdio")
+            stdio = true;
+        else if (arg == "--speed" && hasValue)
+            options.speedFactor = std::atof(argv[++i]);
+        else if (arg == "--help" || arg == "-h")
+            return usage(0);
         else {
             std::fprintf(stderr, "servodesk-sim: unknown argument \"%s\"\n", argv[i]);
             return usage(2);

@@ -38,14 +38,19 @@ TerminalWidget::TerminalWidget(QWidget* parent) : QPlainTextEdit(parent) {
     font.setPointSize(kFontPointSize);
     font.setStyleHint(QFont::Monospace);
     setFont(font);
-    QPalette colours = palette();
-    colours.setColor(QPalette::Base, kBackground);
-    colours.setColor(QPalette::Text, kForeground);
-    setPalette(colours);
+    setColours(kBackground, kForeground);
     setCursorWidth(fontMetrics().horizontalAdvance(QLatin1Char('M')));
     document()->setDocumentMargin(6);
     m_cursor = QTextCursor(document());
     m_cursor.movePosition(QTextCursor::End);
+}
+
+void TerminalWidget::setColours(const QColor& background, const QColor& foreground) {
+    m_background = background;
+    QPalette colours = palette();
+    colours.setColor(QPalette::Base, background);
+    colours.setColor(QPalette::Text, foreground);
+    setPalette(colours);
 }
 
 void TerminalWidget::displayBytes(const QByteArray& bytes) {
@@ -119,7 +124,7 @@ void TerminalWidget::bell() {
     setPalette(flash);
     QTimer::singleShot(kBellFlashMs, this, [this] {
         QPalette normal = palette();
-        normal.setColor(QPalette::Base, kBackground);
+        normal.setColor(QPalette::Base, m_background);
         setPalette(normal);
     });
 }
@@ -162,7 +167,9 @@ bool TerminalWidget::event(QEvent* event) {
     // Keys the drive needs (Esc, ^X, ^V, plain characters) must reach keyPressEvent, not a shortcut.
     if (event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);
-        if (!bytesForKey(key).isEmpty() || key->matches(QKeySequence::Paste)) {
+        const bool historyKey = key->modifiers() == Qt::NoModifier &&
+                                (key->key() == Qt::Key_F3 || key->key() == Qt::Key_Up || key->key() == Qt::Key_Down);
+        if (historyKey || !bytesForKey(key).isEmpty() || key->matches(QKeySequence::Paste)) {
             event->accept();
             return true;
         }
@@ -179,13 +186,66 @@ void TerminalWidget::keyPressEvent(QKeyEvent* event) {
         pasteToDrive();
         return;
     }
+    if (event->modifiers() == Qt::NoModifier) {
+        switch (event->key()) {
+        case Qt::Key_F3: // Motion Link's LAST COMMAND: the newest line again, ready to edit or send
+            m_history.resetBrowsing(); // and browse from the newest line: Up goes on to older ones
+            replaceTypedLine(m_history.previous(m_typed));
+            return;
+        case Qt::Key_Up:
+            replaceTypedLine(m_history.previous(m_typed));
+            return;
+        case Qt::Key_Down:
+            replaceTypedLine(m_history.next(m_typed));
+            return;
+        default:
+            break;
+        }
+    }
     const QByteArray bytes = bytesForKey(event);
     if (bytes.isEmpty()) {
         QPlainTextEdit::keyPressEvent(event); // scrolling, copy, select all
         return;
     }
     event->accept();
-    emit bytesTyped(bytes);
+    send(bytes);
+}
+
+void TerminalWidget::send(const QByteArray& bytes) {
+    // Follow the line as the drive will have it, so history can replace it with backspaces.
+    for (const char byte : bytes) {
+        switch (byte) {
+        case '\r':
+            m_history.add(std::exchange(m_typed, {}));
+            break;
+        case '\b':
+            m_typed.chop(1);
+            break;
+        case '\x18':
+        case '\x1b':
+            m_typed.clear();
+            m_history.resetBrowsing();
+            break;
+        default:
+            if (isPrintableLatin1(char16_t(uchar(byte)))) m_typed += QChar(char16_t(uchar(byte)));
+            break;
+        }
+    }
+    if (bytes == "\x18" || bytes == "\x1b") emit urgentBytesTyped(bytes);
+    else emit bytesTyped(bytes);
+}
+
+void TerminalWidget::discardTypedLine() {
+    m_history.resetBrowsing();
+    if (!m_typed.isEmpty()) send(QByteArray(m_typed.size(), '\b'));
+}
+
+void TerminalWidget::replaceTypedLine(const QString& line) {
+    // No local echo: erase what the drive echoed with backspaces, then type the line again.
+    QByteArray bytes(m_typed.size(), '\b');
+    for (const QChar ch : line)
+        if (isPrintableLatin1(ch.unicode())) bytes.append(char(ch.unicode()));
+    if (!bytes.isEmpty()) send(bytes);
 }
 
 void TerminalWidget::pasteToDrive() {
@@ -194,7 +254,7 @@ void TerminalWidget::pasteToDrive() {
     QByteArray bytes;
     for (const QChar ch : text)
         if (ch == QLatin1Char('\r') || isPrintableLatin1(ch.unicode())) bytes.append(char(ch.unicode()));
-    if (!bytes.isEmpty()) emit bytesTyped(bytes);
+    if (!bytes.isEmpty()) send(bytes);
 }
 
 void TerminalWidget::contextMenuEvent(QContextMenuEvent* event) {

@@ -1,107 +1,111 @@
-// BDS5 lexer rules (seed-bds5 §4.1, §4.5): `;` starts a comment at the start of a line or after white
-// space; strings are double-quoted; a label is `<number>$` or a dedicated name like `POWER-UP$` first on
-// its line; a number is a word that starts with a digit (decimal, or hex ending in H).
+// Bds5Lexer: palettes, styling in whole lines, and fold levels. Each line's state (inside a label
+// section, IF depth) is kept in Scintilla's line state, so restyling can start at any line.
 #include "bds5_lexer.h"
 
 #include <Qsci/qsciscintilla.h>
 
 #include <QColor>
+#include <QSettings>
+
+#include <algorithm>
+#include <array>
 
 namespace editor {
 
 namespace {
-bool isSpace(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+
+struct Palette {
+    std::array<QRgb, Bds5StyleCount> ink;
+    QRgb paper;
+    QRgb errorPaper;
+};
+
+// Light: GitHub-like inks on white. Dark: VS Code Dark+-like inks on #1e1e1e. Order of Bds5Style:
+// default, comment, string, label, number, command, keyword, variable, switch, constant, condition,
+// operator, error.
+constexpr Palette kLight{{0x1f2328, 0x6e7781, 0x0a3069, 0x8250df, 0x0a6b86, 0x0b57d0, 0x0b57d0, 0x953800, 0x116329,
+                          0x116329, 0x0b57d0, 0x57606a, 0xcf222e},
+                         0xffffff,
+                         0xffebe9};
+constexpr Palette kDark{{0xd4d4d4, 0x6a9955, 0xce9178, 0xc586c0, 0xb5cea8, 0x569cd6, 0x569cd6, 0x9cdcfe, 0x4ec9b0,
+                         0x4ec9b0, 0x569cd6, 0xb0b0b0, 0xf48771},
+                        0x1e1e1e,
+                        0x4b1818};
+
+const Palette& paletteOf(Bds5Lexer::Theme theme) {
+    return theme == Bds5Lexer::Theme::Dark ? kDark : kLight;
 }
-bool isWordChar(char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-}
-bool isDigit(char c) {
-    return c >= '0' && c <= '9';
-}
+
+// Line state: bit 16 = inside a label section, low 16 bits = open IF blocks.
+constexpr int kInLabelBit = 1 << 16;
+
 } // namespace
 
-Bds5Lexer::Bds5Lexer(QObject* parent) : QsciLexerCustom(parent) {}
+Bds5Lexer::Bds5Lexer(QObject* parent) : QsciLexerCustom(parent), m_theme(themeFromSettings()) {}
+
+Bds5Lexer::Theme Bds5Lexer::themeFromSettings() {
+    // The Options dialog keeps it in "options/theme"; "ui/theme" is the older name.
+    const QSettings settings;
+    const QString theme =
+        settings.value(QStringLiteral("options/theme"), settings.value(QStringLiteral("ui/theme"))).toString();
+    return theme == QLatin1String("dark") ? Theme::Dark : Theme::Light;
+}
+
+void Bds5Lexer::setTheme(Theme theme) {
+    m_theme = theme;
+    if (m_base != QFont()) applyStyles(m_base);
+}
+
+void Bds5Lexer::applyStyles(const QFont& base) {
+    m_base = base;
+    setDefaultFont(base);
+    setDefaultColor(foreground());
+    setDefaultPaper(paper());
+    for (int style = 0; style < Bds5StyleCount; ++style) {
+        QFont font = base;
+        font.setBold(style == Command || style == Label || style == Constant);
+        font.setItalic(style == Comment);
+        setFont(font, style);
+        setColor(defaultColor(style), style);
+        setPaper(defaultPaper(style), style);
+    }
+}
+
+QColor Bds5Lexer::paper() const {
+    return QColor::fromRgb(paletteOf(m_theme).paper);
+}
+
+QColor Bds5Lexer::foreground() const {
+    return QColor::fromRgb(paletteOf(m_theme).ink[Default]);
+}
+
+QColor Bds5Lexer::defaultPaper(int style) const {
+    const Palette& p = paletteOf(m_theme);
+    return QColor::fromRgb(style == Error ? p.errorPaper : p.paper);
+}
 
 QString Bds5Lexer::description(int style) const {
     switch (style) {
-    case Default:
-        return tr("Default");
-    case Comment:
-        return tr("Comment");
-    case String:
-        return tr("String");
-    case Label:
-        return tr("Label");
-    case Number:
-        return tr("Number");
-    default:
-        return {};
+    case Default: return tr("Default");
+    case Comment: return tr("Comment");
+    case String: return tr("String");
+    case Label: return tr("Label");
+    case Number: return tr("Number");
+    case Command: return tr("Command");
+    case Keyword: return tr("Keyword");
+    case Variable: return tr("Variable");
+    case Switch: return tr("Switch");
+    case Constant: return tr("Constant");
+    case Condition: return tr("Condition");
+    case Operator: return tr("Operator");
+    case Error: return tr("Unknown word");
+    default: return {};
     }
 }
 
 QColor Bds5Lexer::defaultColor(int style) const {
-    switch (style) {
-    case Comment:
-        return QColor(0x5f, 0x80, 0x5f);
-    case String:
-        return QColor(0xa3, 0x3b, 0x14);
-    case Label:
-        return QColor(0x6a, 0x2c, 0xa8);
-    case Number:
-        return QColor(0x0b, 0x6e, 0x8a);
-    default:
-        return QColor(0x1e, 0x1e, 0x1e);
-    }
-}
-
-QByteArray Bds5Lexer::styleLine(const QByteArray& line) {
-    const qsizetype n = line.size();
-    QByteArray styles(n, char(Default));
-    qsizetype i = 0;
-    while (i < n && isSpace(line[i]))
-        ++i;
-
-    // A label first on the line: digits or a name (letters, '-') right before '$'.
-    qsizetype j = i;
-    while (j < n && (isWordChar(line[j]) || line[j] == '-'))
-        ++j;
-    if (j > i && j < n && line[j] == '$') {
-        for (qsizetype k = i; k <= j; ++k)
-            styles[k] = char(Label);
-        i = j + 1;
-    }
-
-    while (i < n) {
-        const char c = line[i];
-        if (c == ';' && (i == 0 || isSpace(line[i - 1]))) {
-            for (qsizetype k = i; k < n; ++k)
-                styles[k] = char(Comment);
-            break;
-        }
-        if (c == '"') {
-            qsizetype k = i + 1;
-            while (k < n && line[k] != '"' && line[k] != '\r' && line[k] != '\n')
-                ++k;
-            const qsizetype endQuote = (k < n && line[k] == '"') ? k + 1 : k;
-            for (qsizetype m = i; m < endQuote; ++m)
-                styles[m] = char(String);
-            i = endQuote;
-            continue;
-        }
-        if (isWordChar(c)) {
-            qsizetype k = i;
-            while (k < n && isWordChar(line[k]))
-                ++k;
-            if (isDigit(c))
-                for (qsizetype m = i; m < k; ++m)
-                    styles[m] = char(Number);
-            i = k;
-            continue;
-        }
-        ++i;
-    }
-    return styles;
+    const Palette& p = paletteOf(m_theme);
+    return QColor::fromRgb(style >= 0 && style < Bds5StyleCount ? p.ink[std::size_t(style)] : p.ink[Default]);
 }
 
 void Bds5Lexer::styleText(int start, int end) {
@@ -110,11 +114,12 @@ void Bds5Lexer::styleText(int start, int end) {
     // Restyle whole lines: the rules look back to the start of the line.
     const int firstLine = int(ed->SendScintilla(QsciScintilla::SCI_LINEFROMPOSITION, start));
     const int lastLine = int(ed->SendScintilla(QsciScintilla::SCI_LINEFROMPOSITION, end));
+    int state = firstLine > 0 ? int(ed->SendScintilla(QsciScintilla::SCI_GETLINESTATE, firstLine - 1)) : 0;
+    QByteArray bytes;
     for (int line = firstLine; line <= lastLine; ++line) {
         const long lineStart = ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, line);
         const long lineEnd = ed->SendScintilla(QsciScintilla::SCI_GETLINEENDPOSITION, line);
-        if (lineEnd <= lineStart) continue;
-        QByteArray bytes(lineEnd - lineStart + 1, '\0');
+        bytes.resize(lineEnd - lineStart + 1);
         ed->SendScintilla(QsciScintilla::SCI_GETTEXTRANGE, lineStart, lineEnd, bytes.data());
         bytes.chop(1); // the terminating NUL
         const QByteArray styles = styleLine(bytes);
@@ -126,6 +131,39 @@ void Bds5Lexer::styleText(int start, int end) {
                 runStart = k;
             }
         }
+
+        // Fold levels: a label opens a section that the next label at the top level closes; IF opens a
+        // block, ELIF/ELSE close the previous part and open the next, ENDIF is the block's last line.
+        bool inLabel = (state & kInLabelBit) != 0;
+        int depth = state & 0xffff;
+        int level = depth + (inLabel ? 1 : 0);
+        bool header = false;
+        switch (bds5LineKind(bytes)) {
+        case Bds5LineKind::Label:
+            if (depth == 0) {
+                level = 0;
+                header = true;
+                inLabel = true;
+            }
+            break;
+        case Bds5LineKind::If:
+            header = true;
+            ++depth;
+            break;
+        case Bds5LineKind::Elif:
+        case Bds5LineKind::Else:
+            if (depth > 0) {
+                --level;
+                header = true;
+            }
+            break;
+        case Bds5LineKind::Endif: depth = std::max(0, depth - 1); break;
+        case Bds5LineKind::Plain: break;
+        }
+        const int flags = header ? QsciScintilla::SC_FOLDLEVELHEADERFLAG : 0;
+        ed->SendScintilla(QsciScintilla::SCI_SETFOLDLEVEL, line, (QsciScintilla::SC_FOLDLEVELBASE + level) | flags);
+        state = std::min(depth, 0xffff) | (inLabel ? kInLabelBit : 0);
+        ed->SendScintilla(QsciScintilla::SCI_SETLINESTATE, line, state);
     }
 }
 

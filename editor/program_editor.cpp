@@ -122,6 +122,41 @@ void ProgramEditor::newDocument() {
     setEolMode(QsciScintilla::EolUnix);
 }
 
+FileResult ProgramEditor::saveSelectedText(const QString& path) const {
+    QString content = selectedText();
+    if (content.isEmpty()) return {false, tr("No block is marked: select text first")};
+    content.replace(QStringLiteral("\r\n"), QStringLiteral("\n"));
+    if (eolMode() == QsciScintilla::EolWindows) content.replace(QLatin1Char('\n'), QStringLiteral("\r\n"));
+    const bool latin1 = m_encoding == Encoding::Latin1 && fitsLatin1(content);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return {false, tr("Cannot write %1: %2").arg(QFileInfo(path).fileName(), file.errorString())};
+    file.write(latin1 ? content.toLatin1() : content.toUtf8());
+    if (!file.commit())
+        return {false, tr("Cannot save %1: %2").arg(QFileInfo(path).fileName(), file.errorString())};
+    return {};
+}
+
+FileResult ProgramEditor::insertFile(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {false, tr("Cannot open %1: %2").arg(QFileInfo(path).fileName(), file.errorString())};
+    const QByteArray bytes = file.readAll();
+    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
+    QString text = utf8.decode(bytes);
+    if (utf8.hasError()) text = QString::fromLatin1(bytes);
+    if (text.startsWith(QChar(0xfeff))) text.remove(0, 1);
+    text.replace(QStringLiteral("\r\n"), QStringLiteral("\n"));
+    if (eolMode() == QsciScintilla::EolWindows) text.replace(QLatin1Char('\n'), QStringLiteral("\r\n"));
+    const QByteArray inserted = text.toUtf8();
+    beginUndoAction();
+    const long at = SendScintilla(SCI_GETCURRENTPOS);
+    SendScintilla(SCI_INSERTTEXT, at, inserted.constData());
+    SendScintilla(SCI_GOTOPOS, static_cast<unsigned long>(at + inserted.size()));
+    endUndoAction();
+    return {};
+}
+
 void ProgramEditor::updateLineNumberMargin() {
     const int digits = qMax(3, int(QString::number(lines()).size()));
     if (digits == m_marginDigits) return;

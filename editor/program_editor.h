@@ -39,8 +39,19 @@ public:
     // Keeps the text but makes it unnamed, so the next save asks for a name (a sample opened from resources).
     void forgetFilePath() { m_filePath.clear(); }
 
+    // SAVE MARKED BLOCK (^K^W): writes the selected text to path, in this file's encoding and line ends.
+    FileResult saveSelectedText(const QString& path) const;
+    // MERGE FILE (^K^R): inserts the file's text at the cursor as one undo step, its line ends converted
+    // to this file's; the cursor ends after it.
+    FileResult insertFile(const QString& path);
+
     QString filePath() const { return m_filePath; }
     Encoding encoding() const { return m_encoding; }
+
+signals:
+    // F1 on a word: the catalog topic the language support found there ("MA", "VMAX", "X12", "ERR 25",
+    // "$" for labels); emitted by Bds5Language. A help browser may show the topic in full.
+    void helpRequested(const QString& topic);
 
 private:
     void updateLineNumberMargin();

@@ -5,6 +5,7 @@
 
 static void initializeServoDeskResources() {
     Q_INIT_RESOURCE(servodesk);
+    Q_INIT_RESOURCE(standard_var); // generated at build time (resources/CMakeLists.txt)
 }
 
 namespace resources {

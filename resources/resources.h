@@ -11,7 +11,16 @@ void initialize();
 
 // The sample program the IDE opens with (a BDS5 .BDS file).
 inline const QString kSampleProgram = QStringLiteral(":/samples/hello.bds");
+// STANDARD.VAR: the BDS5 factory variable set (.VAR), generated from the drive catalog at build time.
+inline const QString kStandardVariables = QStringLiteral(":/variables/STANDARD.VAR");
 // The application icon (SVG; shown where Qt's SVG image plugin is installed).
 inline const QString kAppIcon = QStringLiteral(":/icons/servodesk.svg");
+// Tab icons per file type (16x16 SVG): program .BDS, variable set .VAR, capture .CAP, anything else.
+inline const QString kProgramFileIcon = QStringLiteral(":/icons/file-bds.svg");
+inline const QString kVariableFileIcon = QStringLiteral(":/icons/file-var.svg");
+inline const QString kCaptureFileIcon = QStringLiteral(":/icons/file-cap.svg");
+inline const QString kOtherFileIcon = QStringLiteral(":/icons/file-other.svg");
+// The classic (Motion Link / WordStar) key table, as plain text for Help.
+inline const QString kClassicKeymapHelp = QStringLiteral(":/help/keymap-classic.txt");
 
 } // namespace resources

@@ -32,7 +32,7 @@ Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(
     connect(&m_silence, &QTimer::timeout, this, &Bds5Session::onPromptConfirmed);
     connect(&m_timeout, &QTimer::timeout, this, &Bds5Session::onTimeout);
     connect(&m_wake, &QTimer::timeout, this, [this] {
-        if (m_state == State::WaitingForPrompt && !m_rawLineOpen) m_link.write("\r");
+        if (m_state == State::WaitingForPrompt && !m_rawLineOpen) write("\r");
     });
     if (m_link.isOpen()) onLinkOpened();
 }
@@ -44,11 +44,29 @@ quint64 Bds5Session::send(const QString& line) {
     return id;
 }
 
+quint64 Bds5Session::sendEscape() {
+    const quint64 id = m_nextId++;
+    m_queue.push_back(Pending{id, QString(), 0, QByteArray("\x1b")});
+    pump();
+    return id;
+}
+
 void Bds5Session::sendRaw(const QByteArray& bytes) {
-    if (m_current) {
+    // Terminal bytes wait while queued commands run (a download's lines must not get typing mixed in).
+    if (m_current || !m_queue.empty()) {
         m_heldRaw.append(bytes);
         return;
     }
+    passRaw(bytes);
+}
+
+void Bds5Session::sendUrgent(const QByteArray& bytes) {
+    // With a command in flight its response still ends at the drive's next prompt; nothing else changes.
+    if (m_current) write(bytes);
+    else passRaw(bytes);
+}
+
+void Bds5Session::passRaw(const QByteArray& bytes) {
     for (const char c : bytes) {
         if (c == '\r' || c == '\x1b' || c == '\x18') m_rawLineOpen = false;
         else if (c >= ' ') m_rawLineOpen = true;
@@ -59,7 +77,7 @@ void Bds5Session::sendRaw(const QByteArray& bytes) {
         // Nothing is sent to ask: a CR could answer a program's INPUT.
         m_runDetect.start();
     }
-    m_link.write(bytes);
+    write(bytes);
 }
 
 void Bds5Session::cancelPending() {
@@ -89,7 +107,12 @@ void Bds5Session::onBytes(const QByteArray& bytes) {
     emit rawReceived(bytes);
     const QString text = QString::fromLatin1(bytes);
     m_tail = (m_tail + text).right(kTailKeep);
-    if (m_current) m_response += text;
+    if (m_current) {
+        m_response += text;
+        // The time-out counts from the last byte: a long <BDS or DUMP listing at 9600 baud outlasts any
+        // fixed allowance, yet a drive that has stopped talking is still noticed.
+        m_timeout.start(timeoutMsFor(m_current->line));
+    }
     // A prompt counts only when it ends the stream and the drive then stays silent (§2.10 rule 6). In
     // program-load mode nothing but the echo comes before the l-> prompt: it counts at once, which keeps
     // a download at the wire's pace.
@@ -125,7 +148,7 @@ void Bds5Session::onPromptConfirmed() {
         }
     }
     setState(State::Ready);
-    if (!m_heldRaw.isEmpty()) sendRaw(std::exchange(m_heldRaw, {}));
+    if (!m_heldRaw.isEmpty() && m_queue.empty()) sendRaw(std::exchange(m_heldRaw, {}));
     pump();
 }
 
@@ -138,7 +161,7 @@ void Bds5Session::onTimeout() {
     emit failed(lost.id, tr("no prompt from the drive within %1 ms after \"%2\"")
                              .arg(timeoutMsFor(lost.line))
                              .arg(lost.line));
-    m_link.write("\r"); // ask for a prompt so the queue can go on
+    write("\r"); // ask for a prompt so the queue can go on
 }
 
 void Bds5Session::pump() {
@@ -148,7 +171,12 @@ void Bds5Session::pump() {
     m_response.clear();
     setState(State::Busy);
     m_timeout.start(timeoutMsFor(m_current->line));
-    m_link.write(m_current->line.toLatin1() + '\r');
+    write(m_current->bytes.isEmpty() ? m_current->line.toLatin1() + '\r' : m_current->bytes);
+}
+
+void Bds5Session::write(const QByteArray& bytes) {
+    emit rawSent(bytes);
+    m_link.write(bytes);
 }
 
 void Bds5Session::setState(State state) {
@@ -172,6 +200,7 @@ Bds5Response Bds5Session::parseResponse(const Pending& command, QString text, co
     const QString echo = command.line + QStringLiteral("\r\n");
     if (text.startsWith(echo)) text.remove(0, echo.size());
     else if (text.startsWith(QStringLiteral("\r\n"))) text.remove(0, 2); // ECHO 0: only the line end
+    r.text = text;
     for (QString line : text.split(QStringLiteral("\r\n"))) {
         while (line.startsWith(QLatin1Char('\n'))) line.remove(0, 1);
         if (line.isEmpty()) continue;

@@ -23,6 +23,7 @@ struct Bds5Response {
     QStringList lines;           // output lines without CR LF; ERR lines are in errors instead
     QList<Bds5ErrorLine> errors; // errors the drive reported for this command (and held ones it flushed)
     QString prompt;              // the prompt that ended the response
+    QString text;                // everything between the echo and the prompt, CR LF and empty lines kept
     bool ignored = false;        // ERROR MSG WAITING--COMMAND IGNORED, still so after the one automatic retry
 };
 
@@ -35,8 +36,14 @@ public:
 
     // Queues one instruction (without CR). Returns an id that finished()/failed() carry.
     quint64 send(const QString& line);
+    // Queues an Esc (no CR): leaves program-load mode (>BDS) at the next prompt; finished() carries the
+    // prompt that follows (-->). Used by transfers to end a download.
+    quint64 sendEscape();
     // Bytes typed in a terminal, passed through untouched; held while a queued command is in flight.
     void sendRaw(const QByteArray& bytes);
+    // Attention characters from the user (^X, Esc): written at once, ahead of held terminal bytes and of
+    // every queued command, even during a transfer; otherwise treated like sendRaw (mode and state).
+    void sendUrgent(const QByteArray& bytes);
     // Drops every queued command that has not been sent yet (each gets failed()).
     void cancelPending();
 
@@ -47,6 +54,7 @@ public:
 
 signals:
     void rawReceived(const QByteArray& bytes); // every byte from the drive, for the terminal and captures
+    void rawSent(const QByteArray& bytes);     // every byte written to the drive, as written (captures)
     void modeChanged(serialport::Bds5Mode mode, const QString& prompt);
     void stateChanged(serialport::Bds5Session::State state);
     void finished(quint64 id, const serialport::Bds5Response& response);
@@ -57,6 +65,7 @@ private:
         quint64 id;
         QString line;
         int retries = 1;
+        QByteArray bytes; // written instead of line + CR when not empty (Esc)
     };
 
     void onBytes(const QByteArray& bytes);
@@ -65,6 +74,8 @@ private:
     void onLinkOpened();
     void onLinkClosed();
     void pump();
+    void passRaw(const QByteArray& bytes);
+    void write(const QByteArray& bytes);
     void setState(State state);
     Bds5Response parseResponse(const Pending& command, QString text, const QString& prompt) const;
     int timeoutMsFor(const QString& line) const;

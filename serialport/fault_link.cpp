@@ -78,8 +78,10 @@ void FaultLink::pass(QByteArray bytes, Direction direction) {
     const bool queued = std::any_of(m_pending.begin(), m_pending.end(),
                                     [direction](const Pending& p) { return p.direction == direction; });
     if (delay == 0 && !queued) {
-        if (direction == ToDrive) m_inner.write(bytes);
-        else emit bytesReceived(bytes);
+        if (direction == ToDrive)
+            m_inner.write(bytes);
+        else
+            emit bytesReceived(bytes);
         return;
     }
     // Order is kept per direction: nothing overtakes a chunk held back before it.
@@ -101,8 +103,10 @@ void FaultLink::deliverDue() {
         }
         Pending p = std::move(*it);
         m_pending.erase(it);
-        if (p.direction == ToDrive) m_inner.write(p.bytes);
-        else emit bytesReceived(p.bytes);
+        if (p.direction == ToDrive)
+            m_inner.write(p.bytes);
+        else
+            emit bytesReceived(p.bytes);
     }
 }
 

@@ -2,16 +2,16 @@
 #include "pty_drive_host.h"
 
 #include <algorithm>
-#include <optional>
-#include <utility>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <fcntl.h>
+#include <optional>
 #include <poll.h>
 #include <stdlib.h>
 #include <termios.h>
 #include <unistd.h>
+#include <utility>
 
 namespace serialport {
 

@@ -5,9 +5,9 @@ namespace app::cli {
 
 namespace {
 bool isCommandWord(const QString& w) {
-    static const QStringList kWords{QStringLiteral("check"), QStringLiteral("compile"), QStringLiteral("download"),
-                                    QStringLiteral("upload"), QStringLiteral("vars"), QStringLiteral("send"),
-                                    QStringLiteral("run"), QStringLiteral("stop"), QStringLiteral("record")};
+    static const QStringList kWords{QStringLiteral("check"),  QStringLiteral("compile"), QStringLiteral("download"),
+                                    QStringLiteral("upload"), QStringLiteral("vars"),    QStringLiteral("send"),
+                                    QStringLiteral("run"),    QStringLiteral("stop"),    QStringLiteral("record")};
     return kWords.contains(w);
 }
 } // namespace
@@ -44,8 +44,10 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
     };
     for (; i < args.size() && !isCommandWord(args[i]); ++i) {
         const QString& a = args[i];
-        if (a == QLatin1String("--help") || a == QLatin1String("-h")) o.help = true;
-        else if (a == QLatin1String("--sim")) o.simulated = true;
+        if (a == QLatin1String("--help") || a == QLatin1String("-h"))
+            o.help = true;
+        else if (a == QLatin1String("--sim"))
+            o.simulated = true;
         else if (a == QLatin1String("--drive")) {
             const auto v = value(a);
             if (!v) return std::nullopt;
@@ -89,8 +91,10 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
         } else if (word == QLatin1String("run")) {
             c.kind = CliCommand::Kind::Run;
             for (int k = 0; k < rest.size(); ++k) {
-                if (rest[k] == QLatin1String("--follow") && k + 1 < rest.size()) c.followSeconds = rest[++k].toDouble();
-                else c.args << rest[k];
+                if (rest[k] == QLatin1String("--follow") && k + 1 < rest.size())
+                    c.followSeconds = rest[++k].toDouble();
+                else
+                    c.args << rest[k];
             }
             if (c.args.size() > 1) {
                 error = QStringLiteral("run takes one label");
@@ -101,11 +105,16 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
             for (int k = 0; k + 1 < rest.size(); k += 2) {
                 const QString& key = rest[k];
                 const QString& v = rest[k + 1];
-                if (key == QLatin1String("--vars")) c.recordVariables = v.toUpper().split(QLatin1Char(','), Qt::SkipEmptyParts);
-                else if (key == QLatin1String("--count")) c.recordCount = v.toInt();
-                else if (key == QLatin1String("--interval")) c.recordIntervalMs = v.toInt();
-                else if (key == QLatin1String("--then")) c.recordThen = v;
-                else if (key == QLatin1String("--csv")) c.csvPath = v;
+                if (key == QLatin1String("--vars"))
+                    c.recordVariables = v.toUpper().split(QLatin1Char(','), Qt::SkipEmptyParts);
+                else if (key == QLatin1String("--count"))
+                    c.recordCount = v.toInt();
+                else if (key == QLatin1String("--interval"))
+                    c.recordIntervalMs = v.toInt();
+                else if (key == QLatin1String("--then"))
+                    c.recordThen = v;
+                else if (key == QLatin1String("--csv"))
+                    c.csvPath = v;
                 else {
                     error = QStringLiteral("record: unknown option \"%1\"").arg(key);
                     return std::nullopt;
@@ -117,9 +126,9 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
             }
         } else {
             static const std::pair<const char*, CliCommand::Kind> kSimple[] = {
-                {"check", CliCommand::Kind::Check},   {"compile", CliCommand::Kind::Compile},
+                {"check", CliCommand::Kind::Check},       {"compile", CliCommand::Kind::Compile},
                 {"download", CliCommand::Kind::Download}, {"upload", CliCommand::Kind::Upload},
-                {"send", CliCommand::Kind::Send},     {"stop", CliCommand::Kind::Stop}};
+                {"send", CliCommand::Kind::Send},         {"stop", CliCommand::Kind::Stop}};
             for (const auto& [name, kind] : kSimple)
                 if (word == QLatin1String(name)) c.kind = kind;
             if (c.kind == CliCommand::Kind::Compile) {

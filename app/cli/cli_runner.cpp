@@ -82,9 +82,7 @@ void CliRunner::connectDrive() {
         m_link = std::make_unique<serialport::SerialPortLink>(m_options.port, m_options.baud);
     }
     m_session = std::make_unique<Bds5Session>(*m_link);
-    connect(m_link.get(), &serialport::Link::errorOccurred, this, [this](const QString& why) {
-        fail(kNoAnswer, why);
-    });
+    connect(m_link.get(), &serialport::Link::errorOccurred, this, [this](const QString& why) { fail(kNoAnswer, why); });
     connect(m_session.get(), &Bds5Session::stateChanged, this, [this](Bds5Session::State s) {
         if (s == Bds5Session::State::Ready && m_next == 0 && m_deadline.isActive()) {
             m_deadline.stop();
@@ -156,7 +154,8 @@ void CliRunner::check(const CliCommand& c) {
                                     : QString::fromStdString(d.message);
         out(QStringLiteral("%1:%2:%3: error: %4\n").arg(c.args[0]).arg(d.line).arg(d.column + 1).arg(what));
     }
-    if (!diagnostics.empty()) return fail(kDriveError, QStringLiteral("%1: %2 diagnostic(s)").arg(c.args[0]).arg(diagnostics.size()));
+    if (!diagnostics.empty())
+        return fail(kDriveError, QStringLiteral("%1: %2 diagnostic(s)").arg(c.args[0]).arg(diagnostics.size()));
     next();
 }
 
@@ -166,8 +165,10 @@ void CliRunner::transfer(const CliCommand& c) {
     if (c.kind == CliCommand::Kind::Download || c.kind == CliCommand::Kind::VarsSend) {
         const auto text = readFile(c.args[0], error);
         if (!text) return fail(kUsage, error);
-        if (c.kind == CliCommand::Kind::Download) t = new serialport::Bds5Download(*m_session, *text, {}, this);
-        else t = new serialport::Bds5VariablesToDrive(*m_session, *text, this);
+        if (c.kind == CliCommand::Kind::Download)
+            t = new serialport::Bds5Download(*m_session, *text, {}, this);
+        else
+            t = new serialport::Bds5VariablesToDrive(*m_session, *text, this);
     } else if (c.kind == CliCommand::Kind::Upload) {
         t = new serialport::Bds5Upload(*m_session, this);
     } else {
@@ -200,7 +201,8 @@ void CliRunner::transferDone(const CliCommand& c, const serialport::Bds5Transfer
     if (c.kind == CliCommand::Kind::Upload &&
         !writeFile(c.args[0], r.lines.join(QLatin1Char('\n')) + QLatin1Char('\n'), error))
         return fail(kUsage, error);
-    if (c.kind == CliCommand::Kind::VarsDump && !writeFile(c.args[0], r.lines.join(QLatin1Char('\n')) + QLatin1Char('\n'), error))
+    if (c.kind == CliCommand::Kind::VarsDump &&
+        !writeFile(c.args[0], r.lines.join(QLatin1Char('\n')) + QLatin1Char('\n'), error))
         return fail(kUsage, error);
     if (!r.errors.isEmpty()) return fail(kDriveError, r.summary);
     out(r.summary + QLatin1Char('\n'));
@@ -217,7 +219,8 @@ void CliRunner::sendLines(const QStringList& lines, int index) {
                 if (done != id) return;
                 guard->deleteLater();
                 for (const QString& l : r.lines) out(l + QLatin1Char('\n'));
-                for (const auto& e : r.errors) out(QStringLiteral("ERR %1 '%2' %3\n").arg(e.code).arg(e.entry, e.message));
+                for (const auto& e : r.errors)
+                    out(QStringLiteral("ERR %1 '%2' %3\n").arg(e.code).arg(e.entry, e.message));
                 if (!r.errors.isEmpty())
                     return fail(kDriveError, QStringLiteral("the drive refused \"%1\": ERR %2 %3")
                                                  .arg(lines[index])
@@ -339,36 +342,44 @@ void CliRunner::record(const CliCommand& c) {
 void CliRunner::play(const CliCommand& c) {
     const quint64 id = m_session->send(QStringLiteral("PLAY"));
     auto* guard = new QObject(this);
-    connect(m_session.get(), &Bds5Session::finished, guard,
-            [this, guard, id, c](quint64 done, const serialport::Bds5Response& r) {
-                if (done != id) return;
-                guard->deleteLater();
-                progress(QString());
-                if (!r.errors.isEmpty())
-                    return fail(kDriveError, QStringLiteral("PLAY: ERR %1 %2").arg(r.errors.first().code).arg(r.errors.first().message));
-                QString csv = QStringLiteral("# ServoDesk RECORD %1 samples every %2 ms\n").arg(c.recordCount).arg(c.recordIntervalMs);
-                csv += QStringLiteral("time_s");
-                for (const QString& v : c.recordVariables) {
-                    const auto ref = drive_core::catalog::bds5::findVariable(v.toStdString());
-                    const QString unit = ref ? QString::fromLatin1(ref->info->units.data(), qsizetype(ref->info->units.size())) : QString();
-                    csv += QStringLiteral(",%1 [%2]").arg(v, unit);
-                }
+    connect(
+        m_session.get(), &Bds5Session::finished, guard,
+        [this, guard, id, c](quint64 done, const serialport::Bds5Response& r) {
+            if (done != id) return;
+            guard->deleteLater();
+            progress(QString());
+            if (!r.errors.isEmpty())
+                return fail(kDriveError,
+                            QStringLiteral("PLAY: ERR %1 %2").arg(r.errors.first().code).arg(r.errors.first().message));
+            QString csv = QStringLiteral("# ServoDesk RECORD %1 samples every %2 ms\n")
+                              .arg(c.recordCount)
+                              .arg(c.recordIntervalMs);
+            csv += QStringLiteral("time_s");
+            for (const QString& v : c.recordVariables) {
+                const auto ref = drive_core::catalog::bds5::findVariable(v.toStdString());
+                const QString unit =
+                    ref ? QString::fromLatin1(ref->info->units.data(), qsizetype(ref->info->units.size())) : QString();
+                csv += QStringLiteral(",%1 [%2]").arg(v, unit);
+            }
+            csv += QLatin1Char('\n');
+            int samples = 0;
+            for (int i = 1; i < r.lines.size(); ++i) { // line 0 repeats the RECORD set-up
+                const QStringList values = r.lines[i].split(QLatin1Char(' '), Qt::SkipEmptyParts);
+                if (values.size() != c.recordVariables.size()) continue;
+                csv += QString::number(double(samples) * c.recordIntervalMs / 1000.0, 'f', 3);
+                for (const QString& v : values) csv += QLatin1Char(',') + v;
                 csv += QLatin1Char('\n');
-                int samples = 0;
-                for (int i = 1; i < r.lines.size(); ++i) { // line 0 repeats the RECORD set-up
-                    const QStringList values = r.lines[i].split(QLatin1Char(' '), Qt::SkipEmptyParts);
-                    if (values.size() != c.recordVariables.size()) continue;
-                    csv += QString::number(double(samples) * c.recordIntervalMs / 1000.0, 'f', 3);
-                    for (const QString& v : values) csv += QLatin1Char(',') + v;
-                    csv += QLatin1Char('\n');
-                    ++samples;
-                }
-                if (samples == 0) return fail(kDriveError, QStringLiteral("PLAY returned no samples"));
-                QString error;
-                if (!writeFile(c.csvPath, csv, error)) return fail(kUsage, error);
-                out(QStringLiteral("%1 samples of %2 written to %3\n").arg(samples).arg(c.recordVariables.join(QLatin1Char(','))).arg(c.csvPath));
-                next();
-            });
+                ++samples;
+            }
+            if (samples == 0) return fail(kDriveError, QStringLiteral("PLAY returned no samples"));
+            QString error;
+            if (!writeFile(c.csvPath, csv, error)) return fail(kUsage, error);
+            out(QStringLiteral("%1 samples of %2 written to %3\n")
+                    .arg(samples)
+                    .arg(c.recordVariables.join(QLatin1Char(',')))
+                    .arg(c.csvPath));
+            next();
+        });
 }
 
 } // namespace app::cli

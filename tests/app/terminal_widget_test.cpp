@@ -2,6 +2,7 @@
 #include "app/terminal_widget.h"
 
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTest>
 
 using app::TerminalWidget;
@@ -9,6 +10,11 @@ using app::TerminalWidget;
 class TerminalWidgetTest : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // the command history lives in QSettings
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskTerminalTest"));
+    }
     void crLfStartsALine() {
         TerminalWidget t;
         t.displayBytes("-->P 1\r\n           1\r\n-->");
@@ -75,17 +81,20 @@ private slots:
     }
     void keysSendWhatABds5TerminalSends() {
         TerminalWidget t;
-        QSignalSpy typed(&t, &TerminalWidget::bytesTyped);
+        QByteArray sent, urgent;
+        connect(&t, &TerminalWidget::bytesTyped, &t, [&sent](const QByteArray& b) { sent += b; });
+        connect(&t, &TerminalWidget::urgentBytesTyped, &t, [&sent, &urgent](const QByteArray& b) {
+            sent += b;
+            urgent += b;
+        });
         QTest::keyClicks(&t, QStringLiteral("P \"a,1\""));
         QTest::keyClick(&t, Qt::Key_Return);
         QTest::keyClick(&t, Qt::Key_Backspace);
         QTest::keyClick(&t, Qt::Key_Escape);
         QTest::keyClick(&t, Qt::Key_X, Qt::ControlModifier);
         QTest::keyClick(&t, Qt::Key_V, Qt::ControlModifier);
-        QByteArray sent;
-        for (const QList<QVariant>& args : typed)
-            sent += args.at(0).toByteArray();
         QCOMPARE(sent, QByteArray("P \"a,1\"\r\b\x1b\x18\x16"));
+        QCOMPARE(urgent, QByteArray("\x1b\x18")); // Esc and ^X overtake anything queued
         QCOMPARE(t.text(), QString()); // no local echo: the drive echoes
     }
 };

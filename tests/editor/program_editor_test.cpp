@@ -1,23 +1,13 @@
-// ProgramEditor and Bds5Lexer: the colours a BDS5 line gets, and files that come back byte for byte.
-#include "editor/bds5_lexer.h"
+// ProgramEditor: files that come back byte for byte.
 #include "editor/program_editor.h"
 
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
-using editor::Bds5Lexer;
 using editor::ProgramEditor;
 
 namespace {
-// One letter per byte: d default, c comment, s string, l label, n number.
-QByteArray styleCodes(const QByteArray& line) {
-    QByteArray codes;
-    for (const char style : Bds5Lexer::styleLine(line))
-        codes += "dcsln"[int(style)];
-    return codes;
-}
-
 QByteArray readAll(const QString& path) {
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
@@ -32,17 +22,7 @@ bool writeAll(const QString& path, const QByteArray& bytes) {
 class ProgramEditorTest : public QObject {
     Q_OBJECT
 private slots:
-    void lexerColoursLabelsStringsNumbersAndComments() {
-        QCOMPARE(styleCodes("10$ ;START"), QByteArray("llldcccccc"));
-        QCOMPARE(styleCodes("POWER-UP$"), QByteArray("lllllllll"));
-        QCOMPARE(styleCodes("P \"A;B\""), QByteArray("ddsssss"));
-        QCOMPARE(styleCodes("X1 = 1000"), QByteArray("dddddnnnn"));
-        QCOMPARE(styleCodes("  ;INDENTED"), QByteArray("ddccccccccc"));
-    }
-    void lexerNeedsASpaceBeforeAComment() { // `J 10;BAD COMMENT` is not a comment (seed-bds5 §4.1)
-        QCOMPARE(styleCodes("J 10;X"), QByteArray("ddnndd"));
-    }
-    void lexerLeavesAnUnclosedStringAtTheLineEnd() { QCOMPARE(styleCodes("P \"AB"), QByteArray("ddsss")); }
+    // The BDS5 lexer's colours are tested in bds5_language_test.
 
     void latin1FileComesBackByteForByte() {
         QTemporaryDir dir;

@@ -5,6 +5,8 @@ file(REMOVE_RECURSE "${OUT_DIR}")
 file(MAKE_DIRECTORY "${OUT_DIR}")
 set(ENV{XDG_RUNTIME_DIR} "${OUT_DIR}/.runtime")
 file(MAKE_DIRECTORY "$ENV{XDG_RUNTIME_DIR}")
+# Crash recovery of a real session must not show up in (or be taken by) the tour.
+set(ENV{SERVODESK_RECOVERY_DIR} "${OUT_DIR}/.recovery")
 file(CHMOD "$ENV{XDG_RUNTIME_DIR}" DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 if(PLATFORM STREQUAL "xvfb")
     set(ENV{QT_QPA_PLATFORM} "xcb")
