@@ -3,6 +3,7 @@
 # "asan" preset's non-GUI tests (drive_core, the fuzz corpus replay, serialport) and runs them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$(nproc)" --target drive_core_tests bds5_fuzz_replay bds5_session_test fault_link_test \
     bds5_protocol_test
