@@ -1,10 +1,10 @@
 // Capture: everything the session sent and received is in the capture, the .CAP file holds the drive's
 // text byte for byte, and a saved .CAP opens again unchanged.
-#include "app/capture_dock.h"
-#include "app/capture_log.h"
-#include "app/drive_connection.h"
+#include "app/drive/capture_dock.h"
+#include "app/drive/capture_log.h"
+#include "app/drive/drive_connection.h"
 #include "app/main_window.h"
-#include "app/terminal_widget.h"
+#include "app/drive/terminal_widget.h"
 
 #include "serialport/bds5_session.h"
 

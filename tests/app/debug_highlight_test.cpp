@@ -1,13 +1,13 @@
 // Beyond Motion Link: while the drive single-steps or traces the manual's nested-IF example 55$ (X1=X2=1),
 // the editor highlights exactly the lines of the manual's trace (L5688-5699). Also the pieces: the
 // stream parser and the line matching.
-#include "app/debug_highlighter.h"
-#include "app/drive_actions.h"
-#include "app/drive_connection.h"
-#include "app/line_locator.h"
+#include "app/drive/debug_highlighter.h"
+#include "app/drive/drive_actions.h"
+#include "app/drive/drive_connection.h"
+#include "app/drive/line_locator.h"
 #include "app/main_window.h"
-#include "app/step_trace_parser.h"
-#include "app/terminal_widget.h"
+#include "app/drive/step_trace_parser.h"
+#include "app/drive/terminal_widget.h"
 
 #include "editor/program_editor.h"
 #include "serialport/bds5_session.h"

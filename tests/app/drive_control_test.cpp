@@ -1,10 +1,10 @@
 // Terminal and drive control against the simulated BDS5: command history (F3, Up/Down, kept across
 // restarts, capped), ^X overtaking a long queue of commands and stopping motion in time, and the Drive
 // actions following the drive's mode.
-#include "app/drive_actions.h"
-#include "app/drive_connection.h"
+#include "app/drive/drive_actions.h"
+#include "app/drive/drive_connection.h"
 #include "app/main_window.h"
-#include "app/terminal_widget.h"
+#include "app/drive/terminal_widget.h"
 
 #include "serialport/bds5_session.h"
 #include "serialport/simulator_link.h"

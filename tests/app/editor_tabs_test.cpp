@@ -1,12 +1,12 @@
 // Tabs, recent files, per-tab unsaved prompts, the two keymaps typed into a real main window, blocks,
 // merge and autosave — as a user sees them in the window, the tab bar, the menus and the status bar.
-#include "app/autosaver.h"
-#include "app/document_controller.h"
-#include "app/editor_actions.h"
-#include "app/editor_area.h"
-#include "app/editor_tabs.h"
+#include "app/editing/autosaver.h"
+#include "app/editing/document_controller.h"
+#include "app/editing/editor_actions.h"
+#include "app/editing/editor_area.h"
+#include "app/editing/editor_tabs.h"
 #include "app/main_window.h"
-#include "app/recent_files.h"
+#include "app/editing/recent_files.h"
 
 #include "editor/editor_size_dialog.h"
 #include "editor/find_bar.h"

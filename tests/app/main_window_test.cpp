@@ -1,7 +1,7 @@
 // MainWindow against the simulated BDS5: what a user sees on start-up and after typing in the terminal.
-#include "app/drive_connection.h"
+#include "app/drive/drive_connection.h"
 #include "app/main_window.h"
-#include "app/terminal_widget.h"
+#include "app/drive/terminal_widget.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"

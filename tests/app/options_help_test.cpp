@@ -1,12 +1,12 @@
 // Options persist (and the password only when remembered), apply (colours, autobaud, axis wake-up,
 // cable disconnect and reconnect), and the help browser shows the catalog's words for VMAX, ERR 25, MA.
-#include "app/app_options.h"
-#include "app/drive_connection.h"
-#include "app/help_browser.h"
+#include "app/settings/app_options.h"
+#include "app/drive/drive_connection.h"
+#include "app/help/help_browser.h"
 #include "app/main_window.h"
-#include "app/options_controller.h"
-#include "app/options_dialog.h"
-#include "app/terminal_widget.h"
+#include "app/settings/options_controller.h"
+#include "app/settings/options_dialog.h"
+#include "app/drive/terminal_widget.h"
 
 #include "drive_core/catalog/bds5_catalog.h"
 #include "editor/program_editor.h"

@@ -1,14 +1,14 @@
 // The Program and Variables menus against the simulated BDS5 at 9600 baud, asserting what a user sees: the
 // terminal, the status bar, the progress dialog, new tabs, and marks at the right editor lines.
-#include "app/drive_connection.h"
-#include "app/editor_area.h"
-#include "app/editor_tabs.h"
+#include "app/drive/drive_connection.h"
+#include "app/editing/editor_area.h"
+#include "app/editing/editor_tabs.h"
 #include "app/main_window.h"
-#include "app/program_controller.h"
-#include "app/terminal_widget.h"
-#include "app/transfer_dialog.h"
-#include "app/transfer_markers.h"
-#include "app/variables_controller.h"
+#include "app/transfer/program_controller.h"
+#include "app/drive/terminal_widget.h"
+#include "app/transfer/transfer_dialog.h"
+#include "app/transfer/transfer_markers.h"
+#include "app/transfer/variables_controller.h"
 
 #include "editor/program_editor.h"
 

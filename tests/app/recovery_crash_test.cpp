@@ -6,12 +6,12 @@
 // (no destructors, no clean-up), and the restore must be a fresh start. Typing needs key events, which
 // only an in-process QTest can deliver without a test-only back door in the servodesk executable — so the
 // victim is a small program around the same MainWindow, and the fresh start happens in this process.
-#include "app/document_controller.h"
-#include "app/editor_area.h"
-#include "app/editor_tabs.h"
+#include "app/editing/document_controller.h"
+#include "app/editing/editor_area.h"
+#include "app/editing/editor_tabs.h"
 #include "app/main_window.h"
-#include "app/recovery_bar.h"
-#include "app/recovery_store.h"
+#include "app/editing/recovery_bar.h"
+#include "app/editing/recovery_store.h"
 
 #include "editor/program_editor.h"
 

@@ -2,9 +2,9 @@
 // builds) opens FILE, gets TEXT typed into its editor as key events, and — once the real autosave has
 // written the recovery file — prints "AUTOSAVED" and keeps running until the test kills it with SIGKILL.
 // usage: recovery_victim FILE TEXT   (SERVODESK_RECOVERY_DIR chooses the recovery folder)
-#include "app/autosaver.h"
-#include "app/document_controller.h"
-#include "app/editor_area.h"
+#include "app/editing/autosaver.h"
+#include "app/editing/document_controller.h"
+#include "app/editing/editor_area.h"
 #include "app/main_window.h"
 
 #include "editor/program_editor.h"

@@ -1,5 +1,5 @@
 // TerminalWidget: what the user sees for the bytes a drive sends, and the bytes their keys send.
-#include "app/terminal_widget.h"
+#include "app/drive/terminal_widget.h"
 
 #include <QSignalSpy>
 #include <QStandardPaths>

@@ -1,10 +1,10 @@
 // Opening a 2,000-line BDS5 program the way a user does (File > Open: a new tab, BDS5 language support,
 // load, highlight of the whole text) and what each keystroke costs on top (status-bar size figures, the
 // autosave write of the whole buffer). Prints figures; never asserts a time.
-#include "app/autosaver.h"
-#include "app/document_controller.h"
-#include "app/editor_area.h"
-#include "app/editor_tabs.h"
+#include "app/editing/autosaver.h"
+#include "app/editing/document_controller.h"
+#include "app/editing/editor_area.h"
+#include "app/editing/editor_tabs.h"
 #include "app/main_window.h"
 
 #include "editor/editor_size.h"
