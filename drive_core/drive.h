@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "simulator_controls.h"
+
 namespace drive_core {
 
 enum class DriveFamily { Bds5, Sc750, Pmc960 };
@@ -43,6 +45,9 @@ public:
     virtual void setInput(int number, bool on) = 0;
     virtual bool input(int number) const = 0;
     virtual bool output(int number) const = 0;
+
+    // The bench around a simulated drive (inputs, load, motor, power); nullptr until a family offers it.
+    virtual SimulatorControls* controls() { return nullptr; }
 };
 
 } // namespace drive_core

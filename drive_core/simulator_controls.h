@@ -1,0 +1,59 @@
+// What a simulated drive offers outside its serial port: the test bench around it. The IDE's I/O panel,
+// tests and servodesk-sim's side channel flip inputs and change the load here, never through the UART.
+// Real drives have no such thing, so the IDE reaches it only through SimulatorLink.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace drive_core {
+
+// A snapshot of the bench, for displays. Units are in the names; counts are the drive's native units.
+struct SimulatorStatus {
+    std::vector<bool> inputs;  // I1.. as numbered in the manual (index 0 = I1)
+    std::vector<bool> outputs; // O1..
+    bool enableInput = true;   // hardware ENABLE line (BDS5: J2 enable)
+    bool motionInput = true;   // hardware MOTION line
+    bool homeSwitch = false;
+    bool positiveLimit = false; // true = limit switch tripped
+    bool negativeLimit = false;
+    bool active = false;        // power stage on
+    bool fault = false;
+    double position_rev = 0;    // motor shaft
+    double velocity_rpm = 0;
+    double current_a = 0;
+    double loadTorque_Nm = 0;
+    double loadInertia_kgm2 = 0;
+    double masterFrequency_Hz = 0; // external encoder / master input, counts per second
+    std::string motorName;
+};
+
+class SimulatorControls {
+public:
+    virtual ~SimulatorControls() = default;
+
+    virtual void setInput(int number, bool on) = 0; // I1..In
+    virtual void setEnableInput(bool on) = 0;
+    virtual void setMotionInput(bool on) = 0;
+    virtual void setHomeSwitch(bool on) = 0;
+    // Position at which the simulated HOME switch closes by itself as the motor passes (in revolutions);
+    // switchless drives ignore it.
+    virtual void setHomeSwitchPosition_rev(double position_rev) = 0;
+    virtual void setLimitSwitches(bool positiveTripped, bool negativeTripped) = 0;
+    virtual void setLoadTorque_Nm(double torque_Nm) = 0;
+    virtual void setLoadInertia_kgm2(double inertia_kgm2) = 0;
+    virtual void setMasterFrequency_Hz(double countsPerSecond) = 0;
+    // One of physics::referenceMotors() by name; false if unknown.
+    virtual bool selectMotor(std::string_view name) = 0;
+    virtual void powerCycle() = 0;
+    virtual SimulatorStatus status() const = 0;
+};
+
+// The side channel's text form, one command per line, for servodesk-sim's control socket and for tests:
+//   input N on|off · enable on|off · motion on|off · home on|off · home-at REV · limits POS NEG (on|off)
+//   load-torque NM · load-inertia KGM2 · master-hz HZ · motor NAME · power-cycle · status
+// Returns "OK", "ERROR <reason>", or for `status` one line of key=value pairs.
+std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
+
+} // namespace drive_core
