@@ -34,17 +34,47 @@ void Bds5Download::begin() {
         m_result.summary = tr("The program is empty: nothing was sent and the drive's program is unchanged.");
         return finish(m_result);
     }
+    m_attempt = 1;
+    enter();
+}
+
+void Bds5Download::enter() {
     m_step = Step::Entering;
-    emit stageChanged(tr("Sending the program"));
+    emit stageChanged(m_attempt == 1 ? tr("Sending the program")
+                                     : tr("Sending the program (attempt %1 of %2)")
+                                           .arg(m_attempt)
+                                           .arg(m_options.attempts));
     emit progress(0, m_program.lineCount());
     send(m_options.password.isEmpty() ? QStringLiteral(">BDS")
                                       : QStringLiteral(">BDS %1").arg(m_options.password));
 }
 
+bool Bds5Download::retry(const QString& reason) {
+    if (isCancelling() || m_full || m_attempt >= m_options.attempts || !session()) return false;
+    ++m_attempt;
+    m_result = {};
+    m_sent = 0;
+    m_leftLoadMode.clear();
+    if (m_verify) {
+        m_verify->disconnect(this);
+        m_verify->deleteLater();
+        m_verify = nullptr;
+    }
+    emit stageChanged(tr("%1 — starting again").arg(reason));
+    // Esc leaves program-load mode if the drive is still in it, and is harmless at -->. >BDS then starts
+    // an empty program, so nothing of the damaged attempt survives.
+    m_step = Step::Resyncing;
+    sendEscape();
+    return true;
+}
+
 void Bds5Download::answered(const Bds5Response& response) {
     switch (m_step) {
+    case Step::Resyncing: return enter();
     case Step::Entering:
         for (const Bds5ErrorLine& e : response.errors) {
+            if (e.code != kEditPassword && retry(tr("The drive answered >BDS with %1").arg(describeError(e))))
+                return;
             m_result.status = Bds5TransferResult::Status::Refused;
             m_result.errors.append({0, 0, response.command, e});
             m_result.summary =
@@ -57,6 +87,7 @@ void Bds5Download::answered(const Bds5Response& response) {
             return finish(m_result);
         }
         if (!isLoadPrompt(response.prompt)) {
+            if (retry(tr("The drive answered >BDS with \"%1\"").arg(response.prompt))) return;
             m_result.status = Bds5TransferResult::Status::Refused;
             m_result.summary =
                 tr("The drive answered >BDS with \"%1\" instead of the l-> prompt: nothing was sent "
@@ -74,6 +105,7 @@ void Bds5Download::answered(const Bds5Response& response) {
             if (e.code == kProgramFull) m_full = true;
         }
         if (!isLoadPrompt(response.prompt)) { // power cycle, reset: the rest must not run as commands
+            if (retry(tr("The drive left program-load mode at line %1").arg(m_sent + 1))) return;
             m_leftLoadMode = response.prompt;
             return finish([this] {
                 m_result.status = Bds5TransferResult::Status::Failed;
@@ -86,6 +118,9 @@ void Bds5Download::answered(const Bds5Response& response) {
                 return m_result;
             }());
         }
+        // The echo came back damaged: the line may have reached the drive damaged too, and load mode cannot
+        // take a line back. Start again now rather than learn it from the read-back.
+        if (response.garbled && retry(tr("Drive line %1 came back damaged").arg(driveLine))) return;
         if (!m_full) ++m_sent;
         emit progress(m_sent, m_program.lineCount());
         if (m_full || isCancelling() || m_sent == m_program.lineCount()) return leave();
@@ -148,10 +183,27 @@ void Bds5Download::afterLeaving(const Bds5Response&) {
         return finish(m_result);
     }
     m_step = Step::Verifying;
+    m_reads = 0;
+    startVerify();
+}
+
+void Bds5Download::startVerify() {
+    const int total = m_program.lineCount();
+    ++m_reads;
+    if (m_verify) {
+        m_verify->disconnect(this);
+        m_verify->deleteLater();
+    }
     m_verify = new Bds5Verify(*session(), m_program, this);
     connect(m_verify, &Bds5Transfer::stageChanged, this, &Bds5Transfer::stageChanged);
     connect(m_verify, &Bds5Transfer::progress, this, &Bds5Transfer::progress);
     connect(m_verify, &Bds5Transfer::finished, this, [this, total](const Bds5TransferResult& verified) {
+        using Status = Bds5TransferResult::Status;
+        if (verified.status == Status::Mismatch || verified.status == Status::Failed) {
+            // The read-back itself crosses the wire: read once more before sending everything again.
+            if (m_reads < 2 && !isCancelling()) return startVerify();
+            if (retry(verified.summary)) return;
+        }
         Bds5TransferResult r = verified;
         r.errors = m_result.errors + r.errors;
         r.linesDone = m_sent;
@@ -168,9 +220,16 @@ void Bds5Download::afterLeaving(const Bds5Response&) {
 }
 
 void Bds5Download::lost(const QString& reason) {
+    if (m_step != Step::Verifying && retry(tr("No answer from the drive (%1)").arg(reason))) return;
     m_result.status = Bds5TransferResult::Status::Failed;
     m_result.linesDone = m_sent;
-    if (m_step == Step::Sending || m_step == Step::Leaving) {
+    if (m_step == Step::Entering || m_step == Step::Resyncing) {
+        // >BDS may have reached the drive even though its l-> did not come back.
+        if (session()) session()->sendUrgent("\x1b");
+        m_result.summary = tr("No answer from the drive when starting the download (%1). The drive may have "
+                              "started an empty program; download again.")
+                               .arg(reason);
+    } else {
         // The drive may still be in program-load mode: leave it, so nothing typed later lands in the program.
         if (session()) session()->sendUrgent("\x1b");
         m_result.summary = tr("No answer from the drive during the download (%1), after %2 of %3 lines. %4 "
@@ -179,9 +238,6 @@ void Bds5Download::lost(const QString& reason) {
                                .arg(m_sent)
                                .arg(m_program.lineCount())
                                .arg(heldText());
-    } else {
-        m_result.summary =
-            tr("The download could not start: %1. The drive's program is unchanged.").arg(reason);
     }
     finish(m_result);
 }

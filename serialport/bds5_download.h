@@ -18,6 +18,9 @@ public:
         QString password;           // the editor password set with PASS on the drive; empty for none
         bool stripComments = false; // send without comment lines and trailing comments (L1157)
         bool verify = true;         // read back and compare, then P CHECKSUM
+        // A line damaged on the wire, a lost prompt or a failed read-back: leave load mode and download
+        // again from the start, up to this many times in all. Success is only ever a verified read-back.
+        int attempts = 3;
     };
 
     Bds5Download(Bds5Session& session, const QString& programText, Options options,
@@ -34,11 +37,15 @@ protected:
     void lost(const QString& reason) override;
 
 private:
-    enum class Step { Entering, Sending, Leaving, Verifying };
+    enum class Step { Resyncing, Entering, Sending, Leaving, Verifying };
 
     void sendNextLine();
     void leave();
     void afterLeaving(const Bds5Response& response);
+    void enter();
+    void startVerify();
+    // Starts over after reason, if attempts remain and the user has not cancelled.
+    bool retry(const QString& reason);
     QString heldText() const;
     QString strippedText() const;
 
@@ -50,6 +57,8 @@ private:
     bool m_full = false;    // ERR 86: the drive's memory is full
     QString m_leftLoadMode; // the prompt that replaced l-> (the drive left load mode on its own)
     Bds5Verify* m_verify = nullptr;
+    int m_attempt = 1;
+    int m_reads = 0; // read-backs in this attempt
 };
 
 } // namespace serialport

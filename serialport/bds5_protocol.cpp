@@ -60,4 +60,21 @@ std::optional<Bds5ErrorLine> parseErrorLine(const QString& line) {
                          match.captured(4)};
 }
 
+int bds5CommandSilenceMs(const QString& line, Bds5Mode mode) {
+    switch (mode) {
+    case Bds5Mode::ProgramLoad:
+    case Bds5Mode::Insert:
+    case Bds5Mode::Find:
+    case Bds5Mode::Change: return 150; // stored or searched at once: only the echo and the prompt
+    default: break;
+    }
+    const QString word = line.trimmed().section(QLatin1Char(' '), 0, 0).toUpper();
+    if (word == QLatin1String("TUNE")) return 30000;                              // shakes the motor
+    if (word == QLatin1String("EN") || word == QLatin1String("ENABLE")) return 5000; // "a few seconds"
+    // Commands that hold the command processor: waits, program starts, label calls.
+    static const QRegularExpression kHolds(QStringLiteral("^(W|RUN|GOSUB|GOTO|TIL|DUMP|PLAY|\\d+\\$)$"));
+    if (kHolds.match(word).hasMatch()) return 3000;
+    return 500;
+}
+
 } // namespace serialport

@@ -27,4 +27,10 @@ struct Bds5ErrorLine {
 // Parses "<bell>ERR 83 LINE 2 '2'      BAD OR OUT OF RANGE" or "ERR 17 FEEDBACK LOSS".
 std::optional<Bds5ErrorLine> parseErrorLine(const QString& line);
 
+// How long the drive may stay silent after a command before its answer or prompt is overdue, not counting
+// the time the bytes spend on the wire (the session adds that from the baud rate). From the drive's own
+// command times: a program line in load mode is stored at once, most commands take milliseconds (App. F),
+// EN and TUNE take seconds. The manual gives no upper bounds; these are ServoDesk's, with margin.
+int bds5CommandSilenceMs(const QString& line, Bds5Mode mode);
+
 } // namespace serialport

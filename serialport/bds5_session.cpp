@@ -5,7 +5,6 @@ namespace serialport {
 
 namespace {
 constexpr int kTailKeep = 256;
-constexpr int kBaseTimeoutMs = 3000; // the slowest interactive commands (EN) take "a few seconds"
 constexpr int kWakeAfterMs = 600;    // no prompt this long after opening: send a CR to ask for one
 constexpr int kRunDetectMs = 1500;   // no prompt this long after a typed line: run mode (EN takes seconds)
 const QString kIgnored = QStringLiteral("ERROR MSG WAITING--COMMAND IGNORED");
@@ -32,7 +31,11 @@ Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(
     connect(&m_silence, &QTimer::timeout, this, &Bds5Session::onPromptConfirmed);
     connect(&m_timeout, &QTimer::timeout, this, &Bds5Session::onTimeout);
     connect(&m_wake, &QTimer::timeout, this, [this] {
-        if (m_state == State::WaitingForPrompt && !m_rawLineOpen) write("\r");
+        if (m_state != State::WaitingForPrompt || m_rawLineOpen) return;
+        write("\r");
+        // After a time-out the CR or the prompt it asked for may be lost too: keep asking, or the queue
+        // would wait for ever.
+        if (m_resyncing) m_wake.start();
     });
     if (m_link.isOpen()) onLinkOpened();
 }
@@ -99,6 +102,7 @@ void Bds5Session::onLinkClosed() {
     if (m_current) emit failed(m_current->id, tr("the link closed before the drive answered"));
     m_current.reset();
     cancelPending();
+    m_resyncing = false;
     m_mode = Bds5Mode::Unknown;
     setState(State::Closed);
 }
@@ -130,6 +134,7 @@ void Bds5Session::onPromptConfirmed() {
     if (!prompt) return;
     m_wake.stop();
     m_runDetect.stop();
+    m_resyncing = false;
     if (*prompt != m_prompt || modeOfPrompt(*prompt) != m_mode) {
         m_prompt = *prompt;
         m_mode = modeOfPrompt(*prompt);
@@ -162,6 +167,8 @@ void Bds5Session::onTimeout() {
                              .arg(timeoutMsFor(lost.line))
                              .arg(lost.line));
     write("\r"); // ask for a prompt so the queue can go on
+    m_resyncing = true;
+    m_wake.start();
 }
 
 void Bds5Session::pump() {
@@ -186,10 +193,11 @@ void Bds5Session::setState(State state) {
 }
 
 int Bds5Session::timeoutMsFor(const QString& line) const {
-    // Echo and answer both cross the wire: allow twice the line plus a screenful of answer at the baud rate.
+    // The time-out restarts with every byte received: it covers the command crossing the wire, its echo
+    // and prompt coming back (10 bits a character), and the drive's own command time.
     const int baud = m_link.baudRate() > 0 ? m_link.baudRate() : 115200;
-    const int chars = 2 * int(line.size()) + 1000;
-    return kBaseTimeoutMs + chars * 10 * 1000 / baud;
+    const int chars = 2 * int(line.size()) + 16;
+    return bds5CommandSilenceMs(line, m_mode) + chars * 10 * 1000 / baud;
 }
 
 Bds5Response Bds5Session::parseResponse(const Pending& command, QString text, const QString& prompt) const {
@@ -200,6 +208,7 @@ Bds5Response Bds5Session::parseResponse(const Pending& command, QString text, co
     const QString echo = command.line + QStringLiteral("\r\n");
     if (text.startsWith(echo)) text.remove(0, echo.size());
     else if (text.startsWith(QStringLiteral("\r\n"))) text.remove(0, 2); // ECHO 0: only the line end
+    else r.garbled = !command.line.isEmpty();
     r.text = text;
     for (QString line : text.split(QStringLiteral("\r\n"))) {
         while (line.startsWith(QLatin1Char('\n'))) line.remove(0, 1);

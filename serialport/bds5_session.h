@@ -25,6 +25,7 @@ struct Bds5Response {
     QString prompt;              // the prompt that ended the response
     QString text;                // everything between the echo and the prompt, CR LF and empty lines kept
     bool ignored = false;        // ERROR MSG WAITING--COMMAND IGNORED, still so after the one automatic retry
+    bool garbled = false; // began with neither the echo nor a bare line end: damaged on the wire either way
 };
 
 class Bds5Session final : public QObject {
@@ -90,6 +91,7 @@ private:
     std::optional<Pending> m_current;
     QByteArray m_heldRaw;      // terminal bytes waiting for the current command to finish
     bool m_rawLineOpen = false; // the terminal user has typed part of a line
+    bool m_resyncing = false;   // a command timed out: asking for a prompt until one comes
     quint64 m_nextId = 1;
     QTimer m_silence;
     QTimer m_timeout;

@@ -42,3 +42,13 @@ TEST(Bds5Protocol, AsynchronousErrorLine) {
     EXPECT_EQ(e->message, QStringLiteral("FEEDBACK LOSS"));
     EXPECT_FALSE(parseErrorLine("ERROR MSG WAITING--COMMAND IGNORED"));
 }
+
+// A lost prompt is noticed as soon as the drive's own command time allows, not after seconds.
+TEST(Bds5Protocol, SilenceBudgetFollowsTheCommandsTime) {
+    EXPECT_LE(bds5CommandSilenceMs("X1=5", Bds5Mode::ProgramLoad), 200);
+    EXPECT_LE(bds5CommandSilenceMs("P X1", Bds5Mode::Interactive), 500);
+    EXPECT_GE(bds5CommandSilenceMs("EN", Bds5Mode::Interactive), 3000);
+    EXPECT_GE(bds5CommandSilenceMs("tune 30 2", Bds5Mode::Interactive), 20000);
+    EXPECT_GE(bds5CommandSilenceMs("10$", Bds5Mode::Interactive), 3000);
+    EXPECT_GE(bds5CommandSilenceMs("W 200", Bds5Mode::Interactive), 3000);
+}
