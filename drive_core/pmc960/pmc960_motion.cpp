@@ -1,0 +1,87 @@
+// PMC-960 motion and the following-error model.
+#include "pmc960_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace drive_core::pmc960 {
+
+void Pmc960Motion::reset() {
+    m_generator = motion::ProfileGenerator{};
+    m_mode = 0;
+    m_error_counts = 0;
+    m_forward = true;
+}
+
+void Pmc960Motion::setMode(int mode) {
+    if (mode == 0) {
+        const double actual = actual_counts();
+        m_generator = motion::ProfileGenerator{};
+        m_generator.setPosition(actual);
+        m_error_counts = 0;
+    } else if (mode == 2 && !moving()) {
+        m_generator.setPosition(actual_counts()); // PSJ cleared; absolute position adjusted by the error
+        m_error_counts = 0;
+    }
+    m_mode = mode;
+}
+
+void Pmc960Motion::index(double distance_counts, double velocity_cps, double accel_cps2) {
+    (void)go(m_generator.finalPosition() + distance_counts, velocity_cps, accel_cps2);
+}
+
+bool Pmc960Motion::go(double target_counts, double velocity_cps, double accel_cps2) {
+    motion::MoveRequest move;
+    move.kind = motion::MoveKind::Position;
+    move.target_counts = target_counts;
+    move.velocity_cps = velocity_cps;
+    move.accel_cps2 = accel_cps2;
+    move.decel_cps2 = accel_cps2;
+    if (target_counts != m_generator.position()) m_forward = target_counts > m_generator.position();
+    return m_generator.push(move).has_value();
+}
+
+void Pmc960Motion::jog(double velocity_cps, double accel_cps2) {
+    motion::MoveRequest move;
+    move.kind = motion::MoveKind::Jog;
+    move.velocity_cps = velocity_cps;
+    move.accel_cps2 = accel_cps2;
+    move.decel_cps2 = accel_cps2;
+    if (velocity_cps != 0) m_forward = velocity_cps > 0;
+    m_generator.jog(move);
+}
+
+void Pmc960Motion::stop(double decel_cps2) {
+    m_generator.stop(decel_cps2);
+}
+
+void Pmc960Motion::sharpStop() {
+    const double here = m_generator.position();
+    m_generator = motion::ProfileGenerator{};
+    m_generator.setPosition(here);
+}
+
+double Pmc960Motion::normalize(double position_counts) {
+    const double cancelled = m_error_counts;
+    m_generator.setPosition(position_counts);
+    m_error_counts = 0;
+    return cancelled;
+}
+
+double Pmc960Motion::remaining_counts() const {
+    return std::abs(m_generator.finalPosition() - m_generator.position());
+}
+
+bool Pmc960Motion::step(double dt_s) {
+    m_generator.step(dt_s);
+    if (m_mode == 0) return false;
+    // e' = v (1 - ff) - kv e, integrated exactly over dt: kv = 4/s per PLGAIN step (chosen), ff = FFGAIN/128.
+    const double kv = std::max(1, m_loop.positionGain) * 4.0;
+    const double ff = std::min(1.0, m_loop.feedForwardGain / 128.0);
+    const double steady = m_generator.velocity() * (1 - ff) / kv;
+    m_error_counts = steady + (m_error_counts - steady) * std::exp(-kv * dt_s);
+    if (!moving() && std::abs(m_error_counts) < 0.5) m_error_counts = 0;
+    return m_mode >= 2 && std::abs(m_error_counts) > m_trip_counts; // the caller snapshots, then SM0
+}
+
+} // namespace drive_core::pmc960

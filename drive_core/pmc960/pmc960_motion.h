@@ -1,0 +1,65 @@
+// PMC-960 motion: the shared profile generator makes the commanded position (the digital reference into the
+// PSJ); a first-order position loop makes the actual position lag it by the following error (PSJ content).
+// The seed gives no plant equations (digest §9.10): the loop's velocity constant is chosen from PLGAIN and
+// the feedforward gain cancels part of the lag. SF trips to IDLE when |PSJ| exceeds the trip point (L223).
+#pragma once
+
+#include "drive_core/motion/profile_generator.h"
+
+namespace drive_core::pmc960 {
+
+class Pmc960Motion {
+public:
+    struct Loop {
+        int positionGain = 16;    // TGP (PLGAIN)
+        int feedForwardGain = 16; // TGF (FFGAIN)
+    };
+
+    void reset();
+    void setLoop(Loop loop) { m_loop = loop; }
+
+    // Modes 0-3 (SM, L1577-1601). SM2 clears the PSJ (at rest the absolute position takes up the error);
+    // SM3 keeps it; SM0 stops the reference and disables the drive.
+    void setMode(int mode);
+    int mode() const { return m_mode; }
+    bool enabled() const { return m_mode != 0; }
+
+    // Motion, in counts, counts/s, counts/s². Relative index, absolute go, signed jog speed.
+    void index(double distance_counts, double velocity_cps, double accel_cps2);
+    // Queued behind the motion in progress (one may wait, L2216); false when the buffer is full.
+    bool go(double target_counts, double velocity_cps, double accel_cps2);
+    void jog(double velocity_cps, double accel_cps2);
+    void stop(double decel_cps2);
+    void sharpStop();
+    // N: the absolute position becomes position; returns the position error it cancelled (SN).
+    double normalize(double position_counts);
+
+    // Advances dt; returns true when the following error exceeds the SF trip point in a position mode
+    // (the caller raises #E1 and sets SM0).
+    bool step(double dt_s);
+    void setTripPoint(double counts) { m_trip_counts = counts; }
+
+    bool moving() const { return m_generator.moving(); }
+    bool jogging() const { return m_generator.jogging(); }
+    bool full() const { return m_generator.full(); }
+    // ';' is satisfied at constant speed or at rest.
+    bool atConstantSpeed() const { return !moving() || m_generator.acceleration() == 0; }
+    double commanded_counts() const { return m_generator.position(); }
+    double target_counts() const { return m_generator.finalPosition(); }
+    double actual_counts() const { return m_generator.position() - m_error_counts; }
+    double velocity_cps() const { return m_generator.velocity(); }
+    double acceleration_cps2() const { return m_generator.acceleration(); }
+    double followingError_counts() const { return m_error_counts; }
+    double remaining_counts() const;
+    bool forward() const { return m_forward; }
+
+private:
+    motion::ProfileGenerator m_generator;
+    Loop m_loop;
+    int m_mode = 0;
+    double m_error_counts = 0;
+    double m_trip_counts = 2048;
+    bool m_forward = true;
+};
+
+} // namespace drive_core::pmc960

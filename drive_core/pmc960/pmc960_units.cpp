@@ -1,0 +1,27 @@
+// PMC-960 unit conversions.
+#include "pmc960_units.h"
+
+#include <algorithm>
+
+namespace drive_core::pmc960 {
+
+Pmc960Units::Pmc960Units(const Pmc960Table& table, bool engineering) {
+    const double tus = double(table.inUse("TUS")) / 10000.0;
+    const double tua = double(table.inUse("TUA")) / 10000.0;
+    const double tup = double(table.inUse("TUP")) / 10000.0;
+    const double wanted = tus * double(table.inUse("TUV"));
+    const bool range48 = wanted > 0 && wanted <= 48000;
+    m_top_cps = range48 ? 48000 : wanted <= 192000 ? 192000 : 384000;
+    if (engineering) {
+        m_velocity = std::max(tus, 1e-6);
+        m_accel = std::max(tua, 1e-6);
+        m_position = std::max(tup, 1e-6);
+    } else { // the internal units of 5.7's table
+        m_velocity = range48 ? 10 : 100;
+        m_accel = range48 ? 100 : 1000;
+        m_position = 1;
+    }
+    m_maxAccel_cps2 = std::max(1.0, double(table.inUse("TUB")) * m_accel);
+}
+
+} // namespace drive_core::pmc960

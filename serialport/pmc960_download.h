@@ -1,0 +1,58 @@
+// Pmc960Download: Program > Download to the PMC-960's program buffer, verified by the communications
+// checksum: <attn>h (reset), SW1, P{} (erase), P<cr> (append), the text line by line (spaces dropped, CR
+// endings, each line's echo awaited), ESC, SW0, <attn>h — whose answer must equal the sum of every byte
+// written since the first poll (digest §4.8, §4.12). Progress per line; cancel leaves the editor with ESC.
+#pragma once
+
+#include "pmc960_session.h"
+
+#include <QObject>
+#include <QStringList>
+
+namespace serialport {
+
+struct Pmc960DownloadResult {
+    bool ok = false;
+    bool cancelled = false;
+    int error = 0;             // a #xx the controller reported, 0 if none
+    QString reason;            // why it failed
+    quint16 hostChecksum = 0;  // what was written
+    quint16 driveChecksum = 0; // what <attn>h answered
+};
+
+class Pmc960Download final : public QObject {
+    Q_OBJECT
+public:
+    Pmc960Download(Pmc960Session& session, const QString& programText, QObject* parent = nullptr);
+
+    void start();
+    void cancel();
+    // The lines sent, as the controller stores them (no spaces, no empty lines).
+    const QStringList& lines() const { return m_lines; }
+    static QStringList programLines(const QString& text);
+
+signals:
+    void progress(int linesSent, int linesTotal);
+    void done(const serialport::Pmc960DownloadResult& result);
+
+private:
+    enum class Step { ResetChecksum, Enable, Erase, Enter, Lines, Leave, Protect, Verify, Done };
+
+    void onFinished(quint64 id, const Pmc960Response& response);
+    void onPoll(quint64 id, char letter, const QString& value);
+    void onFailed(quint64 id, const QString& reason);
+    void next();
+    void finish(bool ok, const QString& reason, int error = 0);
+
+    Pmc960Session& m_session;
+    QStringList m_lines;
+    Step m_step = Step::ResetChecksum;
+    int m_line = 0;
+    quint64 m_waiting = 0;
+    bool m_cancelled = false;
+    Pmc960DownloadResult m_result;
+};
+
+} // namespace serialport
+
+Q_DECLARE_METATYPE(serialport::Pmc960DownloadResult)

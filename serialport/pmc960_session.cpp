@@ -1,0 +1,238 @@
+// The PMC-960 session state machine.
+#include "pmc960_session.h"
+
+#include "drive_core/catalog/pmc960_catalog.h"
+
+#include <QRegularExpression>
+
+#include <algorithm>
+
+namespace serialport {
+
+namespace {
+constexpr char kAttention = 0x1D;
+constexpr int kWakeAfterMs = 300; // no prompt yet: send a CR (answers autobaud too, L1806-1826)
+} // namespace
+
+Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
+    qRegisterMetaType<Pmc960Response>();
+    m_timeout.setSingleShot(true);
+    m_wake.setSingleShot(true);
+    m_wake.setInterval(kWakeAfterMs);
+    connect(&m_link, &Link::bytesReceived, this, &Pmc960Session::onBytes);
+    connect(&m_link, &Link::opened, this, &Pmc960Session::onLinkOpened);
+    connect(&m_link, &Link::closed, this, [this] {
+        m_timeout.stop();
+        m_wake.stop();
+        if (m_current) emit failed(m_current->id, QStringLiteral("link closed"));
+        m_current.reset();
+        setState(State::Closed);
+    });
+    connect(&m_timeout, &QTimer::timeout, this, &Pmc960Session::onTimeout);
+    connect(&m_wake, &QTimer::timeout, this, [this] {
+        if (m_state != State::WaitingForPrompt) return;
+        write("\r", true);
+        m_wake.start();
+    });
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(std::max(20, m_link.quietMs() * 4));
+    connect(&m_settle, &QTimer::timeout, this, [this] {
+        if (m_state != State::WaitingForPrompt || !endsInPrompt()) return;
+        m_buffer.clear();
+        m_wake.stop();
+        setState(State::Ready);
+        pump();
+    });
+    connect(&m_statusTimer, &QTimer::timeout, this, [this] {
+        if (m_state != State::Ready || m_current || !m_queue.empty() || m_statusLetters.isEmpty()) return;
+        Request r;
+        r.id = m_nextId++;
+        r.kind = Kind::Poll;
+        r.bytes = QByteArray(1, m_statusLetters.at(m_statusIndex++ % m_statusLetters.size()));
+        r.timeoutMs = 1000;
+        r.status = true;
+        m_queue.push_back(r);
+        pump();
+    });
+    if (m_link.isOpen()) onLinkOpened();
+}
+
+QString Pmc960Session::errorText(int code) {
+    const auto* info = drive_core::catalog::pmc960::findError(code);
+    return info ? QString::fromUtf8(info->message.data(), qsizetype(info->message.size()))
+                : QStringLiteral("unknown error");
+}
+
+quint64 Pmc960Session::send(const QByteArray& command, int timeoutMs) {
+    m_queue.push_back(Request{m_nextId, Kind::Command, command, {}, timeoutMs, false});
+    pump();
+    return m_nextId++;
+}
+
+quint64 Pmc960Session::poll(char letter, int timeoutMs) {
+    m_queue.push_back(Request{m_nextId, Kind::Poll, QByteArray(1, letter), {}, timeoutMs, false});
+    pump();
+    return m_nextId++;
+}
+
+quint64 Pmc960Session::sendExpecting(const QByteArray& bytes, const QByteArray& expect, int timeoutMs) {
+    m_queue.push_back(Request{m_nextId, Kind::Expect, bytes, expect, timeoutMs, false});
+    pump();
+    return m_nextId++;
+}
+
+void Pmc960Session::cancelPending() {
+    auto queue = std::move(m_queue);
+    m_queue.clear();
+    for (const Request& r : queue) emit failed(r.id, QStringLiteral("cancelled"));
+}
+
+void Pmc960Session::setStatusPolling(int intervalMs, const QByteArray& letters) {
+    m_statusLetters = letters;
+    if (intervalMs <= 0) {
+        m_statusTimer.stop();
+        return;
+    }
+    m_statusTimer.start(intervalMs);
+}
+
+void Pmc960Session::onLinkOpened() {
+    m_buffer.clear();
+    setState(State::WaitingForPrompt);
+    m_wake.start(); // the power-up prompt may come by itself; if not, a CR asks for one
+}
+
+void Pmc960Session::write(const QByteArray& bytes, bool counted) {
+    if (counted)
+        for (const char c : bytes) m_sentSum = quint16(m_sentSum + quint8(c));
+    m_link.write(bytes);
+}
+
+void Pmc960Session::setState(State state) {
+    if (state == m_state) return;
+    m_state = state;
+    emit stateChanged(state);
+}
+
+void Pmc960Session::pump() {
+    if (m_current || m_queue.empty()) return;
+    // Everything waits for the prompt, except that polls and the editor's text need none (the editor
+    // gives no prompt until ESC, and a poll is answered at any time).
+    const Kind next = m_queue.front().kind;
+    if (m_state != State::Ready && !(m_state == State::Busy && (next != Kind::Command || m_inEditor))) return;
+    m_current = m_queue.front();
+    m_queue.pop_front();
+    m_buffer.clear();
+    if (m_current->kind == Kind::Poll) {
+        write(QByteArray(1, kAttention) + m_current->bytes, false); // polls are not in the checksum
+    } else {
+        write(m_current->bytes, true);
+        setState(State::Busy);
+    }
+    m_timeout.start(m_current->timeoutMs);
+    if (m_current->kind == Kind::Expect && m_current->expect.isEmpty()) complete();
+}
+
+bool Pmc960Session::endsInPrompt() const {
+    return m_buffer.size() >= 4 && m_buffer.endsWith('}') && m_buffer.at(m_buffer.size() - 4) == '\r' &&
+           m_buffer.at(m_buffer.size() - 3) == '\n';
+}
+
+void Pmc960Session::onBytes(const QByteArray& bytes) {
+    emit rawReceived(bytes);
+    m_buffer.append(bytes);
+    if (m_current) {
+        const bool done = (m_current->kind == Kind::Command && endsInPrompt()) ||
+                          (m_current->kind == Kind::Poll && m_buffer.contains('\r')) ||
+                          (m_current->kind == Kind::Expect &&
+                           (m_buffer.contains(m_current->expect) || endsInPrompt())); // or an error ended it
+        if (done) complete();
+        return;
+    }
+    if (!endsInPrompt()) return;
+    m_axisId = m_buffer.at(m_buffer.size() - 2);
+    static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
+    for (auto it = kError.globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
+        const int code = it.next().captured(1).toInt(nullptr, 16);
+        emit asyncError(code, errorText(code));
+    }
+    if (m_state == State::WaitingForPrompt) { // more prompts may follow (each CR asked for one)
+        m_settle.start();
+        return;
+    }
+    m_buffer.clear();
+}
+
+Pmc960Response Pmc960Session::parse(const Request& request) const {
+    Pmc960Response r;
+    r.command = request.bytes;
+    QByteArray text = m_buffer.left(m_buffer.size() - 4);
+    QByteArray echo = request.bytes;
+    echo.replace("\r", "");
+    if (text.startsWith(echo)) text.remove(0, echo.size());
+    r.text = text;
+    static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
+    QString value = QString::fromLatin1(text);
+    const auto match = kError.match(value);
+    if (match.hasMatch()) {
+        r.error = match.captured(1).toInt(nullptr, 16);
+        r.errorText = errorText(r.error);
+        value.remove(kError);
+    }
+    r.value = value.trimmed();
+    return r;
+}
+
+void Pmc960Session::complete() {
+    m_timeout.stop();
+    const Request request = *m_current;
+    m_current.reset();
+    switch (request.kind) {
+    case Kind::Command: {
+        m_inEditor = false;
+        const Pmc960Response response = parse(request);
+        m_axisId = m_buffer.at(m_buffer.size() - 2);
+        m_buffer.clear();
+        setState(State::Ready);
+        emit finished(request.id, response);
+        break;
+    }
+    case Kind::Poll: {
+        const int cr = int(m_buffer.indexOf('\r'));
+        const QString value = QString::fromLatin1(m_buffer.left(cr));
+        m_buffer.remove(0, cr + 1);
+        if (request.status)
+            emit statusPolled(request.bytes.at(0), value);
+        else
+            emit pollAnswered(request.id, request.bytes.at(0), value);
+        break;
+    }
+    case Kind::Expect: {
+        Pmc960Response response;
+        response.command = request.bytes;
+        if (endsInPrompt()) { // the editor ended with an error (#C1 buffer full, ...)
+            response = parse(request);
+            m_inEditor = false;
+            setState(State::Ready);
+        } else {
+            m_inEditor = true;
+        }
+        m_buffer.clear();
+        emit finished(request.id, response);
+        break;
+    }
+    }
+    pump();
+}
+
+void Pmc960Session::onTimeout() {
+    if (!m_current) return;
+    const quint64 id = m_current->id;
+    m_current.reset();
+    setState(State::WaitingForPrompt); // ask for a prompt until one comes
+    write("\r", true);
+    m_wake.start();
+    emit failed(id, QStringLiteral("no answer in time"));
+}
+
+} // namespace serialport

@@ -1,0 +1,107 @@
+// Pmc960Session: talks to one ORMEC PMC-960 over any Link. An asynchronous state machine: a queued command
+// is written only at the ready prompt (CR LF <axis> }), its response collected up to the next prompt,
+// #xx error codes decoded from the catalog. Status polls (<attn> + b f g h i m s v) go out only between
+// commands, so a poll timer never disturbs command traffic. Keeps the sum of every byte written (polls
+// excluded), to compare with the controller's communications checksum (<attn>h, 5.3.6).
+// GUI thread; never blocks, no nested event loops. The link must outlive the session.
+#pragma once
+
+#include "link.h"
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <deque>
+#include <optional>
+
+namespace serialport {
+
+struct Pmc960Response {
+    QByteArray command; // as written
+    QByteArray text;    // everything between the echo and the prompt
+    QString value;      // text without error codes and CR LF: "3500" for A?
+    int error = 0;      // the #xx code (0x80..0xE3), 0 if none
+    QString errorText;  // the catalog's message for error
+};
+
+class Pmc960Session final : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Closed, WaitingForPrompt, Ready, Busy };
+
+    explicit Pmc960Session(Link& link, QObject* parent = nullptr);
+
+    // Queues bytes that end in a prompt: "A3500\r", "A?" (a display character ends the command), "P{}".
+    // timeoutMs: how long the prompt may take. Returns an id that finished()/failed() carry.
+    quint64 send(const QByteArray& command, int timeoutMs = 3000);
+    // Queues a status poll; pollAnswered(id, letter, value) carries the reply (decimal or hex output).
+    quint64 poll(char letter, int timeoutMs = 1000);
+    // Queues bytes that produce no prompt (program text in the P editor): written in turn, finished()
+    // follows once `expect` has arrived (the editor's echo), or at once if expect is empty.
+    quint64 sendExpecting(const QByteArray& bytes, const QByteArray& expect, int timeoutMs = 3000);
+    // Drops every queued request not yet written (each gets failed()).
+    void cancelPending();
+    // Polls letters (e.g. "gfvm") every intervalMs while the session is ready and idle; 0 stops.
+    void setStatusPolling(int intervalMs, const QByteArray& letters);
+
+    State state() const { return m_state; }
+    char axisId() const { return m_axisId; }
+    // Sum of the bytes written since resetChecksum(), mod 65536 — what <attn>h should answer.
+    quint16 sentChecksum() const { return m_sentSum; }
+    void resetChecksum() { m_sentSum = 0; }
+
+    static QString errorText(int code);
+
+signals:
+    void rawReceived(const QByteArray& bytes);
+    void stateChanged(serialport::Pmc960Session::State state);
+    void finished(quint64 id, const serialport::Pmc960Response& response);
+    void pollAnswered(quint64 id, char letter, const QString& value);
+    void statusPolled(char letter, const QString& value); // from the status timer
+    void failed(quint64 id, const QString& reason);
+    // An asynchronous #Ex code that arrived outside any command (at the prompt).
+    void asyncError(int code, const QString& text);
+
+private:
+    enum class Kind { Command, Poll, Expect };
+    struct Request {
+        quint64 id = 0;
+        Kind kind = Kind::Command;
+        QByteArray bytes;
+        QByteArray expect;
+        int timeoutMs = 3000;
+        bool status = false; // from the status timer
+    };
+
+    void onBytes(const QByteArray& bytes);
+    void onLinkOpened();
+    void onTimeout();
+    void pump();
+    void complete();
+    void write(const QByteArray& bytes, bool counted);
+    void setState(State state);
+    bool endsInPrompt() const;
+    Pmc960Response parse(const Request& request) const;
+
+    Link& m_link;
+    State m_state = State::Closed;
+    std::deque<Request> m_queue;
+    std::optional<Request> m_current;
+    QByteArray m_buffer;
+    char m_axisId = '=';
+    quint16 m_sentSum = 0;
+    quint64 m_nextId = 1;
+    QTimer m_timeout;
+    QTimer m_wake;
+    QTimer m_settle; // a prompt while resynchronising: ready once the line stays quiet
+    QTimer m_statusTimer;
+    QByteArray m_statusLetters;
+    int m_statusIndex = 0;
+    bool m_inEditor = false; // an Expect request left the controller in the P editor: no prompt to wait for
+};
+
+} // namespace serialport
+
+Q_DECLARE_METATYPE(serialport::Pmc960Response)

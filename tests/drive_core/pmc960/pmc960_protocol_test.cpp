@@ -1,0 +1,217 @@
+// The PMC-960 host protocol: status polls via the 1DH attention byte, the 16-bit communications checksum
+// (5.3.6, digest §4.8), binary numbers, <attn><ID> talker selection, autobaud, persistence across power.
+#include "pmc960_test_drive.h"
+
+#include <numeric>
+
+namespace pmc960_test {
+namespace {
+
+constexpr char kAttn = 0x1D;
+
+std::string attn(char letter) {
+    return std::string(1, kAttn) + letter;
+}
+
+TEST(Pmc960Protocol, PollsAnswerAtOnceWithoutPrompt) {
+    TestDrive t;
+    EXPECT_EQ(t.type(attn('g')), "0\r");
+    EXPECT_EQ(t.type(attn('v')), "0\r");
+    EXPECT_EQ(t.type(attn('m')), "02\r"); // SS: direction bit forward, drive off
+    EXPECT_EQ(t.type(attn('s')), "0000\r");
+    EXPECT_EQ(t.type(attn('b')), "  0\r");
+}
+
+TEST(Pmc960Protocol, PollsWorkInTheMiddleOfACommandAndDuringMotion) {
+    TestDrive t;
+    t.enable();
+    t.type("J+\r");
+    t.wait(20ms);
+    EXPECT_EQ(t.type("A3" + attn('v') + "5\r"), "A3100\r5" + std::string(kPrompt));
+    EXPECT_EQ(t.type("A?"), prompted("A?35"));
+    EXPECT_EQ(t.type(attn('m')), "8E\r"); // DRVON MOTION TOP-VELOCITY FORWARD
+}
+
+TEST(Pmc960Protocol, ChecksumSumsReceivedBytesAndResets) {
+    TestDrive t;
+    EXPECT_EQ(t.type(attn('h')), "0\r");
+    const std::string sent = "A3500\rV?";
+    t.type(sent);
+    t.type(attn('g')); // polls are not counted
+    const int sum = std::accumulate(sent.begin(), sent.end(), 0, [](int s, char c) { return s + (unsigned char)c; });
+    EXPECT_EQ(t.type(attn('h')), std::to_string(sum) + "\r");
+    EXPECT_EQ(t.type(attn('h')), "0\r"); // read-and-reset
+}
+
+TEST(Pmc960Protocol, ChecksumWrapsAtSixteenBits) {
+    TestDrive t;
+    t.type(attn('h'));
+    const std::string block(700, 'z'); // 700 x 7AH = 85400 -> 85400 - 65536
+    t.type("P?");
+    t.type("\x1b");
+    t.drive.receive(block);
+    t.drive.step(0ms);
+    t.drive.takeTransmitted();
+    const int expected = (700 * 0x7A + 'P' + '?' + 0x1B) % 65536;
+    EXPECT_EQ(t.type(attn('h')), std::to_string(expected) + "\r");
+}
+
+TEST(Pmc960Protocol, BinaryInputVelocity) { // example 21, L1886-1888: v 00 03 78 = 888
+    TestDrive t;
+    t.writeEnable();
+    EXPECT_EQ(t.type("THCC0\r"), prompted("THCC0"));
+    EXPECT_EQ(t.type(std::string("v\0\x03\x78", 4)), prompted("v"));
+    EXPECT_EQ(t.type("V?"), prompted(std::string("V?\x03\x78", 4)));
+}
+
+TEST(Pmc960Protocol, BinaryInputIndexWithDoubledAttention) { // example 22, L1894-1903
+    TestDrive t;
+    t.writeEnable();
+    t.type("THCC0\r");
+    EXPECT_EQ(t.type(std::string("i\0\0\0\x1d\x1d\x4c\r", 8)), prompted("i"));
+    EXPECT_EQ(t.drive.state().reg.distance, 7500);
+    EXPECT_EQ(t.type("I?"), prompted(std::string("I?\0\0\x1d\x4c", 6)));
+}
+
+TEST(Pmc960Protocol, BinaryOutputDoublesHash) { // L1906-1910: a data byte 23H is sent twice
+    TestDrive t;
+    t.writeEnable();
+    t.type("THC80\r"); // hex in, binary out
+    t.type("A23\r");   // 35 = 23H
+    EXPECT_EQ(t.type("A?"), prompted(std::string("A?\0##", 5)));
+}
+
+TEST(Pmc960Protocol, BinaryPollsHaveFixedWidths) {
+    TestDrive t;
+    t.writeEnable();
+    t.type("THCC0\r");
+    t.type(std::string("N\0\0\0\x01\x02+", 7));                   // N to +258
+    EXPECT_EQ(t.type(attn('g')), std::string("\0\0\x01\x02", 4)); // 32-bit position, no terminator
+    EXPECT_EQ(t.type(attn('v')), std::string("\0\0", 2));         // 16-bit velocity
+    EXPECT_EQ(t.type(attn('m')), std::string("\x02", 1));         // SS byte
+}
+
+TEST(Pmc960Protocol, AxisSelectionMakesListeners) { // L2543-2560
+    TestDrive t;
+    EXPECT_EQ(t.type(attn('Q')), "");
+    EXPECT_FALSE(t.drive.talker());
+    EXPECT_EQ(t.type("A5\r" + attn('v')), ""); // a listener acts only on <attn><ID>
+    EXPECT_EQ(t.type(attn('=')), "");
+    EXPECT_TRUE(t.drive.talker());
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+}
+
+TEST(Pmc960Protocol, AxisIdIsThePromptCharacter) {
+    TestDrive t;
+    t.writeEnable();
+    EXPECT_EQ(t.type("THIX\r"), "THIX\r\nX}");
+    EXPECT_EQ(t.type("THI \r"), "THI #A5\r\nX}\r\nX}");
+}
+
+TEST(Pmc960Protocol, AutobaudWaitsForACarriageReturn) { // THB0, L1806-1826
+    TestDrive t;
+    t.writeEnable();
+    t.type("THB0\r");
+    t.drive.powerUp();
+    EXPECT_EQ(t.drive.takeTransmitted(), "");
+    EXPECT_EQ(t.type("xyz"), "");
+    EXPECT_EQ(t.type("\r"), kPrompt);
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+}
+
+TEST(Pmc960Protocol, TableSurvivesPowerCycleRegistersDoNot) {
+    TestDrive t;
+    t.writeEnable();
+    t.type("TGP40\r");
+    t.type("A1234\r");
+    t.drive.powerUp();
+    EXPECT_EQ(t.drive.takeTransmitted(), kPrompt);
+    EXPECT_EQ(t.type("TGP?"), prompted("TGP?\r\nP-40"));
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+    EXPECT_EQ(t.type("SW?"), prompted("SW?0")); // write protected again
+}
+
+TEST(Pmc960Protocol, GenericPowerUpWithEstopChangesValuesInUse) { // L1717, L875
+    TestDrive t;
+    t.writeEnable();
+    t.type("THC1\r"); // no echo stored in the table
+    t.drive.setLine(drive_core::pmc960::Pmc960Line::Estop, true);
+    t.drive.powerUp();
+    t.drive.takeTransmitted();
+    EXPECT_EQ(t.type("\r"), kPrompt); // generic: autobaud, decimal, echo
+    EXPECT_EQ(t.type("THC?"), prompted("THC?\r\nC-01"));
+    EXPECT_EQ(t.type("THC!"), prompted("THC!\r\nC-00"));
+}
+
+TEST(Pmc960Protocol, EpromProgramIsCopiedAtPowerUp) { // 5.10, L978-989
+    TestDrive t;
+    t.drive.setEprom("@PROGRAM\r@AI+\r\xFFgarbage");
+    t.drive.powerUp();
+    EXPECT_EQ(t.drive.state().program.text(), "@PROGRAM\r@AI+\r");
+}
+
+} // namespace
+} // namespace pmc960_test
+
+namespace pmc960_test {
+namespace {
+
+// The documented hazard (L2564-2568): i1000+ then <attn>v without flow control — the PMC is busy after
+// the '+', 'v' overruns <attn> and is read as part of the index command: a syntax error.
+TEST(Pmc960Overrun, PollAfterATriggerIsLostWithoutFlowControl) {
+    drive_core::pmc960::Pmc960Drive drive;
+    drive.setLineRateLimited(false);
+    drive.setOverrunModel(true);
+    drive.receive("SM2\r");
+    for (int i = 0; i < 20; ++i) drive.step(1ms);
+    drive.takeTransmitted();
+    drive.receive("i1000+\x1dv");
+    for (int i = 0; i < 30; ++i) drive.step(1ms);
+    EXPECT_EQ(drive.takeTransmitted(), "i1000+v#A2\r\n=}");
+    EXPECT_EQ(drive.overruns(), 1);
+}
+
+TEST(Pmc960Overrun, HostHonouringCtsLosesNothing) {
+    drive_core::pmc960::Pmc960Drive drive;
+    drive.setLineRateLimited(false);
+    drive.setOverrunModel(true);
+    std::string out;
+    auto sendWithFlowControl = [&](std::string_view bytes) {
+        for (const char c : bytes) {
+            while (!drive.clearToSend()) drive.step(1ms);
+            drive.receive(std::string_view(&c, 1));
+            drive.step(2ms); // one character time at 9600 baud, and a little
+        }
+        for (int i = 0; i < 20; ++i) drive.step(1ms);
+        out += drive.takeTransmitted();
+    };
+    drive.takeTransmitted();
+    sendWithFlowControl("SM2\r");
+    sendWithFlowControl("i1000+\x1dv");
+    EXPECT_EQ(drive.overruns(), 0);
+    EXPECT_EQ(out.find("#A2"), std::string::npos) << out;
+    EXPECT_NE(out.find("i1000+"), std::string::npos);
+}
+
+} // namespace
+} // namespace pmc960_test
+
+namespace pmc960_test {
+namespace {
+
+TEST(Pmc960Bench, SideChannelDrivesTheMachineLines) { // servodesk-sim --control, the IDE's I/O panel
+    TestDrive t;
+    drive_core::SimulatorControls& bench = *t.drive.controls();
+    EXPECT_EQ(drive_core::runSimulatorCommand(bench, "input 1 on"), "OK");
+    EXPECT_EQ(t.type("SI?"), prompted("SI?0001"));
+    t.enable();
+    t.type("J+\r");
+    t.wait(10ms);
+    EXPECT_EQ(drive_core::runSimulatorCommand(bench, "motion off"), "OK"); // ESTOP'
+    EXPECT_EQ(t.drive.takeTransmitted(), "#E0" + std::string(kPrompt));
+    EXPECT_FALSE(bench.status().motionInput);
+    EXPECT_TRUE(bench.status().inputs[0]);
+}
+
+} // namespace
+} // namespace pmc960_test

@@ -1,0 +1,145 @@
+// Pmc960Session and Pmc960Download over SimulatorLink (the simulated PMC-960): prompt handling, #xx
+// decoding, polls between commands, and a download verified by the communications checksum.
+#include "serialport/pmc960_download.h"
+#include "serialport/pmc960_session.h"
+#include "serialport/pmc960_upload.h"
+#include "serialport/simulator_link.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace serialport;
+
+class Pmc960SessionTest : public QObject {
+    Q_OBJECT
+
+private:
+    struct Fixture {
+        SimulatorLink link{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, 9600, false}};
+        Pmc960Session session{link};
+        Fixture() { link.open(); }
+    };
+
+    static Pmc960Response run(Pmc960Session& session, const QByteArray& command) {
+        QSignalSpy finished(&session, &Pmc960Session::finished);
+        const quint64 id = session.send(command);
+        if (!finished.wait(5000)) {
+            qWarning("no answer to %s", command.constData());
+            return {};
+        }
+        const auto args = finished.takeFirst();
+        if (args.at(0).value<quint64>() != id) qWarning("answer for another command");
+        return args.at(1).value<Pmc960Response>();
+    }
+
+private slots:
+    void becomesReadyAtThePrompt() {
+        Fixture f;
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 5000);
+        QCOMPARE(f.session.axisId(), '=');
+    }
+
+    void displayValuesComeBackWithoutEcho() {
+        Fixture f;
+        QCOMPARE(run(f.session, "A3500\r").error, 0);
+        const Pmc960Response r = run(f.session, "A?");
+        QCOMPARE(r.value, QStringLiteral("3500"));
+        QCOMPARE(r.error, 0);
+    }
+
+    void errorCodesAreDecodedFromTheCatalog() {
+        Fixture f;
+        const Pmc960Response r = run(f.session, "A0\r");
+        QCOMPARE(r.error, 0x92);
+        QCOMPARE(r.errorText, QStringLiteral("Acceleration out of range"));
+        QCOMPARE(run(f.session, "I100+").error, 0xB6); // the drive is not enabled
+    }
+
+    void pollsGoBetweenCommands() {
+        Fixture f;
+        QSignalSpy polled(&f.session, &Pmc960Session::pollAnswered);
+        QSignalSpy finished(&f.session, &Pmc960Session::finished);
+        f.session.send("SM2\r");
+        f.session.send("G1000+\r");
+        const quint64 id = f.session.poll('g');
+        f.session.send("G!");
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 5000);
+        QCOMPARE(polled.count(), 1);
+        QCOMPARE(polled.at(0).at(0).value<quint64>(), id);
+    }
+
+    void statusTimerPollsWhileIdle() {
+        Fixture f;
+        QSignalSpy status(&f.session, &Pmc960Session::statusPolled);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 5000);
+        f.session.setStatusPolling(20, "gfvm");
+        QTRY_VERIFY_WITH_TIMEOUT(status.count() >= 4, 5000);
+        QCOMPARE(run(f.session, "V?").value, QStringLiteral("400")); // commands still pass
+        f.session.setStatusPolling(0, {});
+        QCOMPARE(status.at(0).at(1).toString(), QStringLiteral("0"));
+    }
+
+    void downloadIsVerifiedByTheChecksum() {
+        Fixture f;
+        Pmc960Download download(f.session, QStringLiteral("@T\nI+,\nLT9\nE\n@.a comment\n"));
+        QSignalSpy done(&download, &Pmc960Download::done);
+        QSignalSpy progress(&download, &Pmc960Download::progress);
+        download.start();
+        QVERIFY(done.wait(10000));
+        const auto result = done.at(0).at(0).value<Pmc960DownloadResult>();
+        QVERIFY2(result.ok, qPrintable(result.reason));
+        QCOMPARE(result.hostChecksum, result.driveChecksum);
+        QCOMPARE(progress.count(), 5);
+        const Pmc960Response listing = run(f.session, "P!");
+        QCOMPARE(listing.text, QByteArray("\r\n@T\r\nI+,\r\nLT9\r\nE\r\n@.acomment"));
+        QCOMPARE(run(f.session, "SW?").value, QStringLiteral("0")); // protected again
+    }
+
+    void uploadReadsTheBufferBack() {
+        Fixture f;
+        Pmc960Download download(f.session, QStringLiteral("@T\nI+,\nLT9\nE\n"));
+        QSignalSpy downloaded(&download, &Pmc960Download::done);
+        download.start();
+        QVERIFY(downloaded.wait(10000));
+        Pmc960Upload upload(f.session);
+        QSignalSpy done(&upload, &Pmc960Upload::done);
+        upload.start();
+        QVERIFY(done.wait(5000));
+        QVERIFY(done.at(0).at(0).toBool());
+        QCOMPARE(done.at(0).at(1).toStringList(), (QStringList{"@T", "I+,", "LT9", "E"}));
+    }
+
+    void cancelLeavesTheEditorAndProtects() {
+        Fixture f;
+        QString text;
+        for (int i = 0; i < 50; ++i) text += QStringLiteral("@.line%1\n").arg(i);
+        Pmc960Download download(f.session, text);
+        QSignalSpy done(&download, &Pmc960Download::done);
+        connect(&download, &Pmc960Download::progress, &download, [&download](int sent, int) {
+            if (sent == 3) download.cancel();
+        });
+        download.start();
+        QVERIFY(done.wait(10000));
+        const auto result = done.at(0).at(0).value<Pmc960DownloadResult>();
+        QVERIFY(!result.ok);
+        QVERIFY(result.cancelled);
+        QCOMPARE(run(f.session, "SW?").value, QStringLiteral("0"));
+        QCOMPARE(run(f.session, "A?").value, QStringLiteral("4000")); // at the command prompt again
+    }
+
+    void downloadStopsOnABufferFull() {
+        Fixture f;
+        QString big;
+        for (int i = 0; i < 200; ++i) big += QStringLiteral("@.0123456789\n");
+        Pmc960Download download(f.session, big);
+        QSignalSpy done(&download, &Pmc960Download::done);
+        download.start();
+        QVERIFY(done.wait(20000));
+        const auto result = done.at(0).at(0).value<Pmc960DownloadResult>();
+        QVERIFY(!result.ok);
+        QCOMPARE(result.error, 0xC1);
+    }
+};
+
+QTEST_GUILESS_MAIN(Pmc960SessionTest)
+#include "pmc960_session_test.moc"
