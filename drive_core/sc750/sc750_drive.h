@@ -1,0 +1,154 @@
+// The simulated SC750 servocontroller: runs a downloaded ServoBASIC Plus .BIN on the Vm, its motion on the
+// shared profile generator (ideal servo: POSITION follows POS.COMMAND), discrete I/O, WHEN, interrupts,
+// the serial port shared by the program's PRINT/INPUT and the Motion Dialogue protocol (PROTOCOL.md).
+// Time is injected through step(); the drive ticks every 0.427 ms.
+#pragma once
+
+#include "drive_core/bds5/bds5_uart.h"
+#include "drive_core/drive.h"
+#include "sc750_monitor.h"
+#include "sc750_motion.h"
+#include "sc750_vm.h"
+#include "sc750_vm_host.h"
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace drive_core::sc750 {
+
+struct DriveIndex;
+
+class Sc750Drive final : public Drive, public VmHost, public SimulatorControls {
+public:
+    Sc750Drive();
+
+    // Drive
+    DriveFamily family() const override { return DriveFamily::Sc750; }
+    void powerUp() override;
+    void receive(std::string_view bytes) override;
+    std::string takeTransmitted() override;
+    void step(Microseconds dt) override;
+    Microseconds now() const override { return m_now; }
+    void setLineRateLimited(bool limited) override { m_uart.setUnlimited(!limited); }
+    int inputCount() const override { return 16; }
+    int outputCount() const override { return 12; }
+    void setInput(int number, bool on) override;
+    bool input(int number) const override;  // the level INPn reads (home switch included)
+    bool output(int number) const override; // true = transistor on (OUTn = 0, active low)
+    SimulatorControls* controls() override { return this; }
+
+    // SimulatorControls (the bench). The home switch is wired to INP1 and pulls it low when closed.
+    void setEnableInput(bool on) override { m_enableInput = on; }
+    void setMotionInput(bool) override {}
+    void setHomeSwitch(bool on) override { m_homeSwitch = on; }
+    // The home cam: closed within ±0.25 rev of this shaft position (rev since power-up). NaN = no cam.
+    void setHomeSwitchPosition_rev(double position_rev) override { m_homeCam_rev = position_rev; }
+    void setLimitSwitches(bool, bool) override {}
+    void setLoadTorque_Nm(double) override {}
+    void setLoadInertia_kgm2(double) override {}
+    void setMasterFrequency_Hz(double countsPerSecond) override { m_masterFrequency = countsPerSecond; }
+    bool selectMotor(std::string_view) override { return false; }
+    void powerCycle() override { powerUp(); }
+    SimulatorStatus status() const override;
+
+    // The S1 address switch, read at power-up (255 = RS-232, no multidrop).
+    void setAxisAddress(int address) { m_axisSwitch = address; }
+
+    // For the monitor (protocol) and tests.
+    Vm& vm() { return m_vm; }
+    const Vm& vm() const { return m_vm; }
+    int faultCode() const;
+    bool decimalPoint() const { return m_vm.running(); } // lit while a program executes (L2676)
+    bool configured() const { return m_configured; }
+    void setConfigured(bool configured);
+    bool loadProgram(std::vector<std::uint8_t> bin, std::string* error); // false: refused (error says why)
+    const std::vector<std::uint8_t>& programImage() const { return m_bin; }
+    std::vector<std::uint8_t>& sourceStore() { return m_source; } // NV source text (Download/Upload Source)
+    void setRunTimeFault(int code) { m_runFault = code; }
+    void clearRunTimeFault() { m_runFault = 0; }
+    // A predefined variable by name (Variables window, real-time calls): nullopt if unknown.
+    std::optional<Value> readNamed(std::string_view name);
+    std::string writeNamed(std::string_view name, const std::string& text); // "" ok, else the error
+    void realTimeCall(int motionKind) { motion(motionKind); }
+    void send(std::string_view bytes) { m_uart.write(bytes); } // protocol replies
+    bool loggedOn() const { return m_loggedOn; }
+
+    // VmHost
+    Value readVariable(int catalogIndex) override;
+    std::string writeVariable(int catalogIndex, const Value& value) override;
+    void motion(int kind) override;
+    void write(std::string_view text) override;
+    std::optional<std::string> takeLine() override;
+    std::string takeChar() override;
+    double whenSample(int source) override;
+    void whenLatch() override;
+    void whenAction(int action, int argument, float value) override;
+    void tmrset(int timer, float delay_s, int packed) override;
+    int takeInterrupt() override;
+    bool anyInterruptEnabled() const override { return m_interruptsEnabled; }
+    int axis() const override { return m_axis; }
+    double pauseTime_s() override;
+
+private:
+    void tick();
+    void handleByte(char c);
+    void programByte(char c);
+    void applyParams();
+    bool enabled() const;
+    bool homeClosed() const;
+    double num(int index) const;
+    void set(int index, Value value) { m_values[std::size_t(index)] = std::move(value); }
+    MoveSettings settings() const;
+    GearSettings gearSettings() const;
+    void registration();
+    void refreshInterruptsEnabled();
+
+    struct Timer {
+        bool pulse = false;
+        float delay_s = 0;
+        int output = 0, outputLevel = 0, input = 0, inputLevel = 0;
+        bool configured = false;
+        bool lastTrigger = false;
+        std::int64_t fireAt = -1, endAt = -1;
+    };
+
+    Vm m_vm{*this};
+    Sc750Monitor m_monitor{*this};
+    Sc750Motion m_motion;
+    bds5::Bds5Uart m_uart;
+    std::vector<Value> m_values; // predefined variables by catalog index
+    std::vector<std::uint8_t> m_bin;
+    std::vector<std::uint8_t> m_source;
+    std::array<bool, 16> m_inputs{};
+    std::array<Timer, 6> m_timers{};
+    std::string m_programInput;
+    Microseconds m_now{0};
+    Microseconds m_carry{0};
+    std::int64_t m_ticks = 0;
+    std::int64_t m_timeBase = 0; // tick at which TIME was last written
+    double m_timeOffset_s = 0;
+    int m_axisSwitch = 255;
+    int m_axis = 255;
+    int m_runFault = 0;
+    bool m_loggedOn = true;
+    bool m_enableInput = true;
+    bool m_homeSwitch = false;
+    double m_homeCam_rev = std::nan("");
+    double m_masterFrequency = 0;
+    double m_encoderPosition = 0;
+    bool m_configured = true;
+    bool m_ratioFromPulses = false;                // PULSES.IN/OUT written after RATIO
+    bool m_lastInput7 = true, m_lastInput8 = true; // registration edges
+    bool m_interruptsEnabled = false;
+    bool m_charReceived = false;
+    bool m_wasEnabled = false;
+    bool m_disableEvent = false;
+    std::string m_logon; // "/nnn" being received
+    bool m_inLogon = false;
+    const DriveIndex& ix() const; // catalog indices of the variables the drive computes or reacts to
+};
+
+} // namespace drive_core::sc750

@@ -1,0 +1,332 @@
+// The simulated SC750 as the VM's host: predefined variables (computed ones and write side effects),
+// motion statements, WHEN sampling/latching/actions, software timers and interrupt sources.
+#include "sc750_drive.h"
+#include "sc750_drive_index.h"
+
+#include <cmath>
+
+namespace drive_core::sc750 {
+
+namespace cat = catalog::sc750;
+
+const DriveIndex& driveIndex() {
+    static const DriveIndex index = [] {
+        auto at = [](const char* name) { return cat::variableIndex(name); };
+        DriveIndex i{};
+        i.enable = at("ENABLE");
+        i.enabled = at("ENABLED");
+        i.faultcode = at("FAULTCODE");
+        i.poscmd = at("POS.COMMAND");
+        i.position = at("POSITION");
+        i.poserror = at("POS.ERROR");
+        i.respos = at("RESPOS");
+        i.velocity = at("VELOCITY");
+        i.rvel = at("RVEL");
+        i.velcmd = at("VEL.CMD");
+        i.moving = at("MOVING");
+        i.inposition = at("IN.POSITION");
+        i.inposlimit = at("IN.POS.LIMIT");
+        i.time = at("TIME");
+        i.axisaddr = at("AXIS.ADDR");
+        i.loggedon = at("LOGGEDON");
+        i.accel = at("ACCEL.RATE");
+        i.decel = at("DECEL.RATE");
+        i.speed = at("RUN.SPEED");
+        i.dir = at("DIR");
+        i.indexdist = at("INDEX.DIST");
+        i.target = at("TARGET.POS");
+        i.pausetime = at("PAUSE.TIME");
+        i.inputs = at("INPUTS");
+        i.outputs = at("OUTPUTS");
+        i.pwm12 = at("PWM12");
+        i.inp1 = at("INP1");
+        i.out1 = at("OUT1");
+        i.intr0 = at("INTR.CCWINH");
+        i.tmenable1 = at("TMENABLE1");
+        i.tmout1 = at("TMOUT_1");
+        i.whenPcmd = at("WHEN.PCMD");
+        i.whenPos = at("WHEN.POS");
+        i.whenEncpos = at("WHEN.ENCPOS");
+        i.whenRespos = at("WHEN.RESPOS");
+        i.whenRvel = at("WHEN.RVEL");
+        i.whenTime = at("WHEN.TIME");
+        i.whenAnalog = at("WHEN.ANALOG.IN");
+        i.whenDacmon = at("WHEN.DACMON");
+        i.whenIcmd = at("WHEN.ICMD");
+        i.whenIfb = at("WHEN.IFB");
+        i.whenVelcmd = at("WHEN.VELCMD");
+        i.encpos = at("ENCPOS");
+        i.encfreq = at("ENC.FREQ");
+        i.analogin = at("ANALOG.IN");
+        i.ratio = at("RATIO");
+        i.dacmap = at("DACMAP");
+        i.dmgain = at("DMGAIN");
+        i.blktype = at("BLKTYPE");
+        i.autostart = at("AUTOSTART");
+        i.gearing = at("GEARING");
+        i.acceltype = at("ACCEL.TYPE");
+        i.regmode = at("REG.MODE");
+        i.regfunc = at("REG.FUNC");
+        i.regdist = at("REG.DIST");
+        i.regflag = at("REG.FLAG");
+        i.regpos = at("REG.POS");
+        i.regrespos = at("REG.RESPOS");
+        i.regencpos = at("REG.ENCPOS");
+        i.gearlock = at("GEARLOCK");
+        i.gearerror = at("GEARERROR");
+        i.encin = at("ENC.IN");
+        i.pulsesin = at("PULSES.IN");
+        i.pulsesout = at("PULSES.OUT");
+        i.accelgear = at("ACCEL.GEAR");
+        i.decelgear = at("DECEL.GEAR");
+        return i;
+    }();
+    return index;
+}
+
+double Sc750Drive::num(int index) const {
+    return toDouble(m_values[std::size_t(index)]);
+}
+
+GearSettings Sc750Drive::gearSettings() const {
+    const DriveIndex& x = ix();
+    // the last of RATIO and PULSES.IN/PULSES.OUT written defines the ratio (L1622-L1624)
+    const double ratio =
+        m_ratioFromPulses ? num(x.pulsesout) / num(x.pulsesin) : num(x.ratio) * kCountsPerRev / (4 * num(x.encin));
+    return GearSettings{int(num(x.gearing)), m_masterFrequency, ratio, num(x.accelgear), num(x.decelgear)};
+}
+
+MoveSettings Sc750Drive::settings() const {
+    return MoveSettings{num(ix().accel), num(ix().decel), num(ix().speed), int(num(ix().dir)),
+                        num(ix().acceltype) == 1};
+}
+
+double Sc750Drive::pauseTime_s() {
+    return num(ix().pausetime);
+}
+
+Value Sc750Drive::readVariable(int i) {
+    const DriveIndex& x = ix();
+    auto integer = [](double v) { return Value(std::int32_t(std::llround(v))); };
+    const double pcmd = m_motion.positionCommand_counts();
+    if (i == x.poscmd || i == x.position) return integer(pcmd); // ideal servo: no following error
+    if (i == x.poserror) return Value(std::int32_t(0));
+    if (i == x.respos) {
+        const auto counts = std::llround(m_motion.shaft_counts());
+        return Value(std::int32_t(((counts % 4096) + 4096) % 4096));
+    }
+    if (i == x.velocity || i == x.rvel || i == x.velcmd) return Value(float(m_motion.velocity_rpm()));
+    if (i == x.moving) return Value(std::int32_t(m_motion.moving() ? 1 : 0));
+    if (i == x.inposition) return Value(std::int32_t(!m_motion.moving() ? 1 : 0));
+    if (i == x.enabled) return Value(std::int32_t(enabled() ? 1 : 0));
+    if (i == x.faultcode) return Value(std::int32_t(faultCode()));
+    if (i == x.time) return Value(float(double(m_ticks - m_timeBase) * kTick_s + m_timeOffset_s));
+    if (i == x.axisaddr) return Value(std::int32_t(m_axis));
+    if (i == x.loggedon) return Value(std::int32_t(m_loggedOn ? 1 : 0));
+    if (i == x.inputs) {
+        std::int32_t bits = 0;
+        for (int n = 1; n <= 16; ++n) bits |= (input(n) ? 1 : 0) << (n - 1);
+        return Value(bits);
+    }
+    if (i >= x.inp1 && i < x.inp1 + 16) return Value(std::int32_t(input(i - x.inp1 + 1) ? 1 : 0));
+    if (i >= x.out1 && i < x.out1 + 12) return Value(std::int32_t(output(i - x.out1 + 1) ? 0 : 1));
+    if (i == x.encpos) return integer(m_encoderPosition);
+    if (i == x.gearlock) return Value(std::int32_t(m_motion.gearLocked() ? 1 : 0));
+    if (i == x.gearerror) return integer(m_motion.gearError_counts());
+    if (i == x.encfreq) return Value(float(m_masterFrequency));
+    return m_values[std::size_t(i)];
+}
+
+std::string Sc750Drive::writeVariable(int i, const Value& value) {
+    const DriveIndex& x = ix();
+    const cat::VariableInfo& info = cat::variables()[std::size_t(i)];
+    const double v = toDouble(value);
+    if (info.type != cat::ValueType::String && (v < info.minimum || v > info.maximum))
+        return "VALUE OUT OF RANGE FOR " + std::string(info.name);
+    if (i == x.poscmd) {
+        m_motion.setPositionCommand(v); // redefines the present position (L1412-L1416)
+        return "";
+    }
+    if (i == x.time) {
+        m_timeBase = m_ticks;
+        m_timeOffset_s = v;
+        return "";
+    }
+    if (i == x.encpos) {
+        m_encoderPosition = v;
+        return "";
+    }
+    if (i == x.gearerror) {
+        m_motion.setGearError(v);
+        return "";
+    }
+    if (i == x.ratio) m_ratioFromPulses = false;
+    if (i == x.pulsesin || i == x.pulsesout) m_ratioFromPulses = true;
+    if (i >= x.out1 && i < x.out1 + 12) {
+        const int bit = 1 << (i - x.out1);
+        int outputs = int(num(x.outputs));
+        outputs = v != 0 ? outputs | bit : outputs & ~bit;
+        set(x.outputs, std::int32_t(outputs));
+        return "";
+    }
+    if (i == x.dacmap) set(x.dmgain, 1.0f); // DMGAIN resets when DACMAP changes (L2169)
+    if (i == x.blktype && v != num(x.blktype)) set(x.enable, std::int32_t(0)); // changing BLKTYPE disables (L1956)
+    set(i, value);
+    if (i >= x.intr0 && i < x.intr0 + int(cat::interruptSources().size())) refreshInterruptsEnabled();
+    return "";
+}
+
+void Sc750Drive::refreshInterruptsEnabled() {
+    const int n = int(cat::interruptSources().size());
+    m_interruptsEnabled = false;
+    for (int k = 0; k < n; ++k)
+        if (num(ix().intr0 + k) != 0) m_interruptsEnabled = true;
+}
+
+// Sources in the catalog's (the manual's) order, which is also their priority.
+int Sc750Drive::takeInterrupt() {
+    const int n = int(cat::interruptSources().size());
+    for (int k = 0; k < n; ++k) {
+        if (num(ix().intr0 + k) == 0) continue;
+        bool asserted = false;
+        if (k == 2)
+            asserted = m_charReceived;
+        else if (k == 5)
+            asserted = m_disableEvent;
+        else if (k == 6)
+            asserted = faultCode() != cat::kFaultNone && faultCode() != cat::kFaultEnabled;
+        else if (k >= 7 && k < 23)
+            asserted = input(k - 6);
+        else if (k >= 23 && k < 39)
+            asserted = !input(k - 22);
+        if (!asserted) continue;
+        if (k == 2) m_charReceived = false;
+        if (k == 5) m_disableEvent = false;
+        set(ix().intr0 + k, std::int32_t(0)); // taking an interrupt disables its source (L1766-L1780)
+        refreshInterruptsEnabled();
+        return k;
+    }
+    return -1;
+}
+
+// Registration (L1687-L1758) on rising edges of INP7/REG1 and INP8/REG2 (the encoder's Z channel is not
+// on the bench). Each kind latches once after REG.FLAG is written 0 (armed); REG.FUNC = 1 then moves
+// REG.DIST from the latched position, if a motion command is in progress.
+void Sc750Drive::registration() {
+    const DriveIndex& x = ix();
+    const bool in7 = input(7), in8 = input(8);
+    const bool rise7 = in7 && !m_lastInput7, rise8 = in8 && !m_lastInput8;
+    m_lastInput7 = in7;
+    m_lastInput8 = in8;
+    const int mode = int(num(x.regmode));
+    const bool resolver = mode >= 1 && rise7;
+    const bool encoder = (mode == 2 && rise7) || (mode == 3 && rise8);
+    int flag = int(num(x.regflag));
+    if (resolver && (flag & 2) == 0) {
+        set(x.regpos, readVariable(x.position));
+        set(x.regrespos, readVariable(x.respos));
+        flag |= 2;
+        if (num(x.regfunc) == 1 && enabled() && m_motion.moving())
+            m_motion.goAbs(num(x.regpos) + num(x.regdist), settings());
+    }
+    if (encoder && (flag & 1) == 0) {
+        set(x.regencpos, readVariable(x.encpos));
+        flag |= 1;
+    }
+    set(x.regflag, std::int32_t(flag));
+}
+
+void Sc750Drive::motion(int kind) {
+    if (!enabled()) return; // motion statements are ignored while disabled (L1428)
+    switch (kind) {
+    case 1: m_motion.goVel(settings()); break;
+    case 2: m_motion.goIncr(num(ix().indexdist), settings()); break;
+    case 3: m_motion.goAbs(num(ix().target), settings()); break;
+    case 4: m_motion.goAbs(0, settings()); break;
+    case 5: m_motion.abort(num(ix().decel)); break;
+    case 6: m_motion.update(settings()); break;
+    default: break;
+    }
+}
+
+void Sc750Drive::write(std::string_view text) {
+    m_uart.write(text);
+}
+
+std::optional<std::string> Sc750Drive::takeLine() {
+    if (!m_loggedOn) return std::nullopt; // INPUT waits for the logon (L3688)
+    const auto cr = m_programInput.find('\r');
+    if (cr == std::string::npos) return std::nullopt;
+    std::string line = m_programInput.substr(0, cr);
+    m_programInput.erase(0, cr + 1);
+    if (!m_programInput.empty() && m_programInput.front() == '\n') m_programInput.erase(0, 1);
+    std::erase(line, '\n');
+    return line;
+}
+
+std::string Sc750Drive::takeChar() {
+    if (!m_loggedOn || m_programInput.empty()) return ""; // INKEY$ is null when logged off (L3688)
+    std::string c(1, m_programInput.front());
+    m_programInput.erase(0, 1);
+    return c;
+}
+
+double Sc750Drive::whenSample(int source) {
+    if (source >= 1 && source <= 16) return input(source) ? 1 : 0;
+    if (source == 17 || source == 18) return std::llround(m_motion.positionCommand_counts());
+    if (source == 19) return std::llround(m_encoderPosition);
+    return 0; // ANALOG.IN: no analog source on the bench yet
+}
+
+void Sc750Drive::whenLatch() {
+    const DriveIndex& x = ix();
+    set(x.whenPcmd, readVariable(x.poscmd));
+    set(x.whenPos, readVariable(x.position));
+    set(x.whenEncpos, readVariable(x.encpos));
+    set(x.whenRespos, readVariable(x.respos));
+    set(x.whenRvel, readVariable(x.rvel));
+    set(x.whenTime, readVariable(x.time));
+    set(x.whenAnalog, m_values[std::size_t(x.analogin)]);
+    set(x.whenVelcmd, readVariable(x.velcmd));
+}
+
+void Sc750Drive::whenAction(int action, int argument, float value) {
+    if (action == 1)
+        writeVariable(ix().out1 + argument - 1, std::int32_t(value));
+    else if (action == 2)
+        set(ix().ratio, value);
+    else if (action >= 3 && action <= 8)
+        motion(action - 2);
+    // 0 CONTINUE and 9 PAUSE: no action (digest §4.9 design)
+}
+
+void Sc750Drive::tmrset(int timer, float delay_s, int packed) {
+    Timer& t = m_timers[std::size_t(timer - 1)];
+    t.pulse = (packed & 1) != 0;
+    t.output = packed >> 1 & 0xf;
+    t.outputLevel = packed >> 5 & 1;
+    t.input = packed >> 6 & 0x1f;
+    t.inputLevel = packed >> 11 & 1;
+    t.delay_s = delay_s;
+    t.configured = t.output >= 1 && t.input >= 1;
+    t.lastTrigger = false;
+    t.fireAt = t.endAt = -1;
+}
+
+std::optional<Value> Sc750Drive::readNamed(std::string_view name) {
+    const int i = cat::variableIndex(name);
+    if (i < 0) return std::nullopt;
+    return readVariable(i);
+}
+
+std::string Sc750Drive::writeNamed(std::string_view name, const std::string& text) {
+    const int i = cat::variableIndex(name);
+    if (i < 0) return "UNKNOWN VARIABLE";
+    const auto& info = cat::variables()[std::size_t(i)];
+    if (info.access == cat::Access::ReadOnly) return "READ ONLY";
+    const auto v = parseValue(text, info.type);
+    if (!v) return "BAD VALUE";
+    return writeVariable(i, *v);
+}
+
+} // namespace drive_core::sc750

@@ -1,0 +1,17 @@
+// Catalog indices of the SC750 variables the simulated drive computes or reacts to, looked up once by name.
+#pragma once
+
+namespace drive_core::sc750 {
+
+struct DriveIndex {
+    int enable, enabled, faultcode, poscmd, position, poserror, respos, velocity, rvel, velcmd, moving, inposition,
+        inposlimit, time, axisaddr, loggedon, accel, decel, speed, dir, indexdist, target, pausetime, inputs, outputs,
+        pwm12, inp1, out1, intr0, tmenable1, tmout1, whenPcmd, whenPos, whenEncpos, whenRespos, whenRvel, whenTime,
+        whenAnalog, whenDacmon, whenIcmd, whenIfb, whenVelcmd, encpos, encfreq, analogin, ratio, dacmap, dmgain,
+        blktype, autostart, gearing, gearlock, gearerror, encin, pulsesin, pulsesout, accelgear, decelgear, acceltype,
+        regmode, regfunc, regdist, regflag, regpos, regrespos, regencpos;
+};
+
+const DriveIndex& driveIndex();
+
+} // namespace drive_core::sc750

@@ -1,0 +1,56 @@
+// The SC750 catalog as data: every family the digest lists (§4-§6) is there, with line references,
+// consistent types and ranges, and the look-ups the compiler and the IDE use are case-insensitive.
+#include "drive_core/catalog/sc750_catalog.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+namespace {
+
+namespace cat = drive_core::catalog::sc750;
+
+TEST(Sc750Catalog, HasTheManualsInventories) {
+    EXPECT_EQ(cat::functions().size(), 28u);        // 12 arithmetic + 16 string (§4.6)
+    EXPECT_EQ(cat::interruptSources().size(), 41u); // L1789-L1862
+    EXPECT_EQ(cat::dacMap().size(), 14u);           // DACMAP 0..13 (L2147-L2161)
+    EXPECT_EQ(cat::faults().size(), 21u);           // display codes 0-E and F 1-F 6 (UC has no FAULTCODE)
+    for (const char* s : {"GO.VEL", "GO.INCR", "GO.ABS", "GO.HOME", "ABORT.MOTION", "UPD.MOVE", "PAUSE", "WHEN",
+                          "TMRSET", "INTERRUPT", "RESTART", "SWAP", "CALL", "CLS", "BEEP", "LANINTERRUPT"})
+        EXPECT_NE(cat::findStatement(s), nullptr) << s;
+}
+
+TEST(Sc750Catalog, VariablesAreUniqueReferencedAndConsistent) {
+    std::set<std::string> names;
+    for (const cat::VariableInfo& v : cat::variables()) {
+        EXPECT_TRUE(names.insert(std::string(v.name)).second) << v.name;
+        EXPECT_FALSE(v.manualLines.empty()) << v.name;
+        if (v.type != cat::ValueType::String) {
+            EXPECT_LE(v.minimum, v.defaultValue) << v.name;
+            EXPECT_LE(v.defaultValue, v.maximum) << v.name;
+        }
+    }
+    for (const char* n : {"INP16", "OUT12", "INTR.POS.ERROR", "INTR.I16LO", "TMENABLE6", "TMOUT_6", "WHEN.VELCMD",
+                          "POS.COMMAND", "IN.POS.LIMIT", "AUTOSTART", "COMMOFF"})
+        EXPECT_NE(cat::findVariable(n), nullptr) << n;
+}
+
+TEST(Sc750Catalog, ParametersAreTheBoilerplatesPlusAutostart) {
+    int parameters = 0;
+    for (const cat::VariableInfo& v : cat::variables())
+        if (v.access == cat::Access::Parameter) ++parameters;
+    EXPECT_EQ(parameters, 23); // 22 in the PARAMS boiler-plate (L945-L974) + AUTOSTART
+    EXPECT_EQ(cat::findVariable("KVP")->defaultValue, 0.087086);
+    EXPECT_EQ(cat::findVariable("BLKTYPE")->maximum, 3);
+}
+
+TEST(Sc750Catalog, LookupsIgnoreCase) {
+    EXPECT_EQ(cat::findVariable("run.speed"), cat::findVariable("RUN.SPEED"));
+    EXPECT_NE(cat::findFunction("mid$"), nullptr);
+    EXPECT_EQ(cat::interruptIndex("pos.error"), 40);
+    EXPECT_EQ(cat::findFault(244)->display, "F 4");
+    EXPECT_EQ(cat::findFault(99), nullptr);
+}
+
+} // namespace
