@@ -2,6 +2,8 @@
 #include "drive_factory.h"
 
 #include "bds5/bds5_drive.h"
+#include "pmc960/pmc960_drive.h"
+#include "sc750/sc750_drive.h"
 
 #include <algorithm>
 #include <cctype>
@@ -30,8 +32,8 @@ std::string_view familyName(DriveFamily family) {
 std::unique_ptr<Drive> makeDrive(DriveFamily family) {
     switch (family) {
     case DriveFamily::Bds5: return std::make_unique<bds5::Bds5Drive>();
-    case DriveFamily::Sc750: // simulated in later issues (SC750: issue 8, PMC-960: issue 9)
-    case DriveFamily::Pmc960: return nullptr;
+    case DriveFamily::Sc750: return std::make_unique<sc750::Sc750Drive>();
+    case DriveFamily::Pmc960: return std::make_unique<pmc960::Pmc960Drive>();
     }
     return nullptr;
 }

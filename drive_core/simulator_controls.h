@@ -18,15 +18,18 @@ struct SimulatorStatus {
     bool homeSwitch = false;
     bool positiveLimit = false; // true = limit switch tripped
     bool negativeLimit = false;
-    bool active = false;        // power stage on
+    bool active = false; // power stage on
     bool fault = false;
-    double position_rev = 0;    // motor shaft
+    double position_rev = 0; // motor shaft
     double velocity_rpm = 0;
     double current_a = 0;
     double loadTorque_Nm = 0;
     double loadInertia_kgm2 = 0;
     double masterFrequency_Hz = 0; // external encoder / master input, counts per second
     std::string motorName;
+    bool feedbackConnected = true; // resolver / encoder wires (off: the drive faults, BDS5 ERR 17)
+    bool relayClosed = false;      // fault relay: hardware watchdog OK (BDS5 C2 pins 16/17)
+    bool brakeReleased = false;    // brake output (BDS5 STATUS): the motor is held by the drive
 };
 
 class SimulatorControls {
@@ -48,11 +51,13 @@ public:
     virtual bool selectMotor(std::string_view name) = 0;
     virtual void powerCycle() = 0;
     virtual SimulatorStatus status() const = 0;
+    // Breaks (false) or reconnects the motor's feedback wires; a drive that cannot simulate it ignores it.
+    virtual void setFeedbackConnected(bool connected) { (void)connected; }
 };
 
 // The side channel's text form, one command per line, for servodesk-sim's control socket and for tests:
 //   input N on|off · enable on|off · motion on|off · home on|off · home-at REV · limits POS NEG (on|off)
-//   load-torque NM · load-inertia KGM2 · master-hz HZ · motor NAME · power-cycle · status
+//   load-torque NM · load-inertia KGM2 · master-hz HZ · motor NAME · feedback on|off · power-cycle · status
 // Returns "OK", "ERROR <reason>", or for `status` one line of key=value pairs.
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
 

@@ -45,6 +45,8 @@ void Bds5Drive::powerUp() {
         for (const auto& [name, value] : inputs) m_state.variables.set(name, value);
     m_poweredBefore = true;
     m_state.enabled = false;
+    m_state.servo.powerUp();
+    m_servoRemainder = Microseconds{0};
     logError(m_state, 199); // DRIVE POWERED UP is logged at every power-up (L6118, L7503)
     m_executor.stop();
     m_mode = Bds5DriveMode::Interactive;
@@ -107,17 +109,17 @@ void Bds5Drive::step(Microseconds dt) {
     if (!m_powered) return;
     tickTimers(dt);
     // The serial watchdog: no CR for WTIME ms with WATCH on is ERR 105, break and disable (L5328-5342).
-    if (m_port.watchdogExpired(m_time, switchOn("WATCH", false), m_state.variables.read("WTIME").value_or(1000)))
+    static const auto watch = *catalog::bds5::findVariable("WATCH");
+    static const auto wtime = *catalog::bds5::findVariable("WTIME");
+    static const auto serial = *catalog::bds5::findVariable("SERIAL");
+    if (m_port.watchdogExpired(m_time, m_state.variables.read(watch) != 0, m_state.variables.readUser(wtime)))
         raiseFault(105);
     std::string bytes = std::exchange(m_received, {});
     for (const char c : bytes) handleByte(c);
-    if (const int fault = m_state.motion.step(dt, m_state.variables)) raiseFault(fault);
-    // The hardware LIMIT input opening while enabled: ERR 24, disable, the motor coasts (L2245-2249).
-    if (m_state.enabled && !switchOn("LIMIT", true)) raiseFault(24);
-    m_state.recorder.step(dt, m_state.variables);
+    runServo(dt); // profile, loops, plant, faults and RECORD, every 1 ms (bds5_drive_servo.cpp)
     if (m_executor.running()) runProgram();
     m_uart.advance(dt);
-    m_state.variables.set("SERIAL", m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)
+    m_state.variables.set(serial, m_uart.busy() ? 0 : 1); // SERIAL is ON when the port is idle (L4437)
 }
 
 // TMR1-TMR4 count down every millisecond and stop at 0 (L5775-5800).
@@ -126,11 +128,11 @@ void Bds5Drive::tickTimers(Microseconds dt) {
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(m_timerRemainder);
     if (ms.count() == 0) return;
     m_timerRemainder -= ms;
-    for (const char* name : {"TMR1", "TMR2", "TMR3", "TMR4"}) {
-        const auto ref = catalog::bds5::findVariable(name);
-        if (!ref) continue;
-        const std::int64_t value = m_state.variables.read(*ref);
-        m_state.variables.set(*ref, std::int32_t(std::max<std::int64_t>(0, value - ms.count())));
+    static const std::array timers{*catalog::bds5::findVariable("TMR1"), *catalog::bds5::findVariable("TMR2"),
+                                   *catalog::bds5::findVariable("TMR3"), *catalog::bds5::findVariable("TMR4")};
+    for (const auto& ref : timers) {
+        const std::int64_t value = m_state.variables.read(ref);
+        m_state.variables.set(ref, std::int32_t(std::max<std::int64_t>(0, value - ms.count())));
     }
 }
 

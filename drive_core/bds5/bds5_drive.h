@@ -7,10 +7,12 @@
 #include "bds5_interpreter.h"
 #include "bds5_port.h"
 #include "bds5_resident_editor.h"
+#include "bds5_simulator_controls.h"
 #include "bds5_uart.h"
 #include "drive_core/drive.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,8 +58,23 @@ public:
     bool transmitting() const { return m_uart.busy(); }
     int baudRate() const { return m_uart.baud(); }
     const Bds5State& state() const { return m_state; }
+    // The bench: inputs, load, motor, master input, power (SimulatorControls).
+    SimulatorControls* controls() override { return &m_controls; }
 
 private:
+    friend class Bds5SimulatorControls;
+    // What the bench sets beyond the input pins.
+    struct Bench {
+        std::optional<double> homeAt_rev; // the HOME switch closes around this shaft position
+        double masterFrequency_Hz = 0;    // external input, counts per second
+        bool feedbackConnected = true;    // resolver wires; broken: ERR 17 FEEDBACK LOSS while enabled
+    };
+    static constexpr double kHomeWindow_rev = 1.0 / 64;
+
+    void runServo(Microseconds dt);
+    void servoTick();
+    void masterInput();
+    void homeAndCapture();
     void handleByte(char c);
     void handleEscape();
     void handleBreakCharacter();
@@ -101,6 +118,13 @@ private:
     bool m_poweredBefore = false; // inputs keep their state across later power cycles
     Microseconds m_time{0};
     Microseconds m_timerRemainder{0};
+    Microseconds m_servoRemainder{0};
+    bool m_motionStopped = false; // ERR 19 raised for the motion now stopping
+    double m_masterFraction = 0;  // external counts not yet whole
+    bool m_homeLast = false;      // HOME as last seen, for capture's edge
+    double m_homeLastRev = 0;     // the shaft then (revolutions)
+    Bench m_bench;
+    Bds5SimulatorControls m_controls{*this};
 };
 
 } // namespace drive_core::bds5

@@ -12,6 +12,17 @@ namespace drive_core::bds5 {
 using namespace std::chrono_literals;
 
 namespace {
+// Switches and inputs the executor reads for every line it runs, resolved once.
+struct PollRefs {
+    catalog::bds5::VariableRef multi, cycle, manual, pext, regkhz;
+};
+const PollRefs& pollRefs() {
+    static const PollRefs r{*catalog::bds5::findVariable("MULTI"), *catalog::bds5::findVariable("CYCLE"),
+                            *catalog::bds5::findVariable("MANUAL"), *catalog::bds5::findVariable("PEXT"),
+                            *catalog::bds5::findVariable("REGKHZ")};
+    return r;
+}
+
 constexpr int kMaxLinesPerAdvance = 100000; // bounds one call; zero-cost lines do not exist
 
 bool isMainLabel(DedicatedLabel l) {
@@ -104,7 +115,7 @@ void Bds5Executor::pollAlarms(bool atEnable) {
         const bool inState = (*value != 0) == alarm->on;
         const bool wasInState = m_alarmLast[i].value_or(!inState);
         m_alarmLast[i] = inState;
-        const bool multiOff = i == 2 && m_state.variables.read("MULTI").value_or(1) == 0; // C$ needs MULTI
+        const bool multiOff = i == 2 && m_state.variables.read(pollRefs().multi) == 0; // C$ needs MULTI
         if (inState && (atEnable || !wasInState) && !m_tasks[i].active && !multiOff)
             launch(TaskLevel(i), alarm->line + 1);
     }
@@ -113,11 +124,11 @@ void Bds5Executor::pollAlarms(bool atEnable) {
 // AUTO$ starts on a rising CYCLE edge with MANUAL off; MANUAL$ runs, again and again, while the MANUAL
 // input is on — both only when no main-level routine runs (L4960-4997; "MANUAL on" chosen, see §4.12).
 void Bds5Executor::pollAutoManual() {
-    const bool cycle = m_state.variables.read("CYCLE").value_or(0) != 0;
+    const bool cycle = m_state.variables.read(pollRefs().cycle) != 0;
     const bool rising = cycle && !m_cycleLast;
     m_cycleLast = cycle;
     if (task(TaskLevel::Main).active) return;
-    const bool manual = m_state.variables.read("MANUAL").value_or(0) != 0;
+    const bool manual = m_state.variables.read(pollRefs().manual) != 0;
     const auto label = manual ? DedicatedLabel::Manual : DedicatedLabel::Auto;
     const auto line = m_state.program.dedicatedLine(label);
     if (line && (manual || rising)) launch(TaskLevel::Main, *line + 1);
@@ -127,8 +138,8 @@ void Bds5Executor::pollAutoManual() {
 // min(1, ΔPEXT / REGKHZ) (REGKHZ kHz = REGKHZ external counts a millisecond; digest §7.20). With no
 // external input moving, an RD waits for good, as on a drive whose master encoder stands still.
 void Bds5Executor::advanceRegulatedDwells() {
-    const std::int32_t pext = m_state.variables.read("PEXT").value_or(0);
-    const double khz = std::max<std::int32_t>(1, m_state.variables.read("REGKHZ").value_or(1000));
+    const std::int32_t pext = m_state.variables.readUser(pollRefs().pext);
+    const double khz = std::max<std::int32_t>(1, m_state.variables.readUser(pollRefs().regkhz));
     const double delta = m_pextLast ? double(pext - *m_pextLast) : 0.0;
     m_pextLast = pext;
     const double advance_ms = std::clamp(delta / khz, 0.0, 1.0);
@@ -167,7 +178,7 @@ ProgramStop Bds5Executor::advance(Microseconds now, std::string& out, std::optio
         }
         if (n == 0) advanceRegulatedDwells();
         // MULTI OFF disables alarm C, variable input and background (not A/B) (L4569-4577).
-        const bool multi = m_state.variables.read("MULTI").value_or(1) != 0;
+        const bool multi = m_state.variables.read(pollRefs().multi) != 0;
         std::optional<TaskLevel> pick;
         for (std::size_t i = 0; i < kTaskCount && !pick; ++i) {
             const auto level = TaskLevel(i);

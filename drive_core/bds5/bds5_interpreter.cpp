@@ -168,6 +168,7 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         return {};
     }
     if (word == "RECORD" || word == "PLAY") return record(entries, out);
+    if (word == "TUNE") return tune(entries);
     if (word == "RAND") return random(entries);
     if (word == "TRECORD" || word == "TPLAY") return realTimeTrace(entries, out);
     if (word == "MOTOR") { // the motor/drive combination (factory use, L6923-6927); text chosen
@@ -184,7 +185,9 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
         for (int i = 1; i <= 50; ++i) m_state.variables.set("XS" + std::to_string(i), 0);
         return {};
     }
-    if (word.find('=') != std::string::npos || cat::findVariable(word)) return {assign(entries)};
+    // X(Xn) = expr with blanks around '=' (L9548, the cam test's "X(X1) = (X1-100)*100") is an assignment too.
+    if (word.find('=') != std::string::npos || word.starts_with("X(") || cat::findVariable(word))
+        return {assign(entries)};
     // Known commands whose behaviour is not simulated yet answer as an unknown instruction would.
     return {Bds5Error{80, word, 0}};
 }
@@ -380,12 +383,15 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
         const auto basic = m_state.variables.toBasic(cat::UnitClass::Position, r.value);
         if (!basic) return Bds5Error{96, expression, 0};
         if (const int e = m_state.motion.normalize(*basic)) return Bds5Error{e, name, 0};
+        m_state.servo.normalize(*basic);
         m_state.variables.set("PFB", std::int32_t(*basic));
         m_state.variables.set("PCMD", std::int32_t(*basic));
         return std::nullopt;
     }
     if (const int error = m_state.variables.write(name, r.value, m_state.enabled))
         return Bds5Error{error, error == 83 ? expression : name, 0};
+    if (name == "CAPDIR") m_state.variables.set("CAP", 0);                // writing CAPDIR turns CAP off (L2627)
+    if (name == "GEAR" && r.value == 1) m_state.variables.set("VOFF", 0); // VOFF is reset by GEAR ON (L3031)
     return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include "bds5_motion.h"
 #include "bds5_program.h"
 #include "bds5_recorder.h"
+#include "bds5_servo.h"
 #include "bds5_variable_store.h"
 
 #include <deque>
@@ -31,6 +32,7 @@ struct Bds5State {
     Bds5VariableStore variables;
     Bds5Program program;
     Bds5Motion motion;
+    Bds5Servo servo; // the loops and the simulated motor (PFB, VFB, PE, ICMD come from here)
     Bds5Recorder recorder;
     std::uint32_t randomState = 1; // RAND's generator (v3 L9310)
     // v3 real-time trace (TRECORD/TPLAY, L9317-9319): the last lines executed, oldest first.
@@ -121,6 +123,7 @@ private:
     std::optional<std::int32_t> readValue(std::string_view name) const;
     Outcome motionCommand(std::span<const Entry> entries, const ExecContext& context);
     Outcome record(std::span<const Entry> entries, std::string& out);
+    Outcome tune(std::span<const Entry> entries);
     Outcome random(std::span<const Entry> entries);
     Outcome realTimeTrace(std::span<const Entry> entries, std::string& out);
     // Evaluates an entry and converts it from user to basic units; error set on failure.

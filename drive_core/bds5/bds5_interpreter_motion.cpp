@@ -1,9 +1,12 @@
 // Bds5Interpreter, motion side: the motion commands and their arguments in user units, handed to
-// Bds5Motion (the profile generator's face). The rest of the language is in bds5_interpreter.cpp.
+// Bds5Motion (the profile generator's face), and TUNE. The rest of the language is in bds5_interpreter.cpp.
 #include "bds5_interpreter.h"
+#include "bds5_tune.h"
 
 #include "bds5_expression.h"
 #include "drive_core/catalog/bds5_catalog.h"
+
+#include <cmath>
 
 namespace drive_core::bds5 {
 
@@ -30,7 +33,7 @@ std::optional<std::int64_t> Bds5Interpreter::basicValue(const Entry& entry, cat:
 }
 
 // J v | MA p [v] | MI d [v] | JT p v | JF p v | MRD p v [CW|CCW] | MCA p [v [v]] | MCI d [v [v]] | MCD ms |
-// MCGO | CONTINUE [ms] | W n | NORM p | ZPE (L2277-3158, L4513-4549, App. C).
+// MCGO | CONTINUE [ms] | W n | NORM p [CAM] | ZPE (L2277-3158, L4513-4549, L9430-9460, App. C).
 Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const ExecContext& context) {
     const std::string& word = entries.front().text;
     const auto args = entries.subspan(1);
@@ -40,13 +43,21 @@ Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const Exe
     };
     static constexpr Arity kArity[] = {{"J", 1, 1},   {"MA", 1, 2},   {"MI", 1, 2},  {"JT", 2, 2},      {"JF", 2, 2},
                                        {"MRD", 2, 3}, {"MCA", 1, 3},  {"MCI", 1, 3}, {"MCD", 1, 1},     {"MCGO", 0, 0},
-                                       {"W", 1, 1},   {"NORM", 1, 1}, {"ZPE", 0, 0}, {"CONTINUE", 0, 1}};
+                                       {"W", 1, 1},   {"NORM", 1, 2}, {"ZPE", 0, 0}, {"CONTINUE", 0, 1}};
     for (const Arity& a : kArity)
         if (word == a.word && (args.size() < a.least || args.size() > a.most))
             return {Bds5Error{82, joined(entries), 0}};
     std::optional<Bds5Error> error;
     const auto fail = [&](int e) { return Outcome{Bds5Error{e, joined(entries), 0}}; };
-    if (word == "ZPE") return {}; // PCMD := PFB; with the ideal follower they are already equal
+    if (word == "ZPE") { // PCMD := PFB (EXTLOOP: PEXT), the motor stays where it is (L2484-2494, L3131)
+        const bool extloop = m_state.variables.read("EXTLOOP").value_or(0) != 0;
+        const std::int64_t to =
+            extloop ? std::int64_t(m_state.variables.read("PEXT").value_or(0)) : m_state.servo.feedback_counts();
+        if (const int e = m_state.motion.zeroPositionError(double(to))) return {Bds5Error{e, joined(entries), 0}};
+        m_state.variables.set("PCMD", std::int32_t(to));
+        m_state.variables.set("PE", 0);
+        return {};
+    }
     if (word == "MCGO" || word == "CONTINUE") {
         if (word == "CONTINUE" && !args.empty()) { // averaging time 1..1000 ms (L6620-6631)
             const ExpressionResult r = evaluate(args[0].text, [this](auto n) { return readValue(n); });
@@ -101,10 +112,25 @@ Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const Exe
     const auto unit = word == "J" ? cat::UnitClass::Velocity : cat::UnitClass::Position;
     const auto first = basicValue(args[0], unit, error);
     if (!first) return {error};
+    if (word == "NORM" && args.size() == 2) { // NORM <master counts> CAM: camming on, PFB := PCAM (v3)
+        if (args[1].text != "CAM") return {Bds5Error{83, args[1].text, 0}};
+        if (const int e = m_state.motion.normalizeCam(m_state.variables, m_state.enabled, *first))
+            return {Bds5Error{e, joined(entries), 0}};
+        const auto pcam = std::llround(m_state.motion.servoTarget_counts());
+        m_state.servo.normalize(pcam);
+        m_state.variables.set("PFB", std::int32_t(pcam));
+        m_state.variables.set("PCAM", std::int32_t(pcam));
+        m_state.variables.set("PCMD", std::int32_t(*first % 32768));
+        m_state.variables.set("CAM", 1);
+        m_state.variables.set("PE", 0);
+        return {};
+    }
     if (word == "NORM") {
         if (m_state.variables.read("GEAR").value_or(0)) return {Bds5Error{56, joined(entries), 0}};
         if (const int e = m_state.motion.normalize(*first)) return {Bds5Error{e, joined(entries), 0}};
+        m_state.servo.normalize(*first);
         m_state.variables.set("PFB", std::int32_t(*first));
+        if (m_state.variables.read("EXTLOOP").value_or(0)) m_state.variables.set("PEXT", std::int32_t(*first));
         m_state.variables.set("PCMD", std::int32_t(*first));
         return {};
     }
@@ -218,6 +244,27 @@ Outcome Bds5Interpreter::realTimeTrace(std::span<const Entry> entries, std::stri
         const auto& e = m_state.traceBuffer[std::size_t(n - 1)];
         out += "#" + std::to_string(n) + " LINE " + std::to_string(e.line) + " " + e.prefix + " " + e.text + "\r\n";
     }
+    return {};
+}
+
+// TUNE bw stab (L6264-6286, L7084-7096): enables the drive for the shake even if it is disabled; the
+// motor ends where the shake left it, so the command is re-based on it (PE 0).
+Outcome Bds5Interpreter::tune(std::span<const Entry> entries) {
+    const auto args = entries.subspan(1);
+    if (args.size() != 2) return {Bds5Error{82, joined(entries), 0}};
+    std::int64_t values[2] = {};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const ExpressionResult r = evaluate(args[i].text, [this](auto n) { return readValue(n); });
+        if (r.error) return {Bds5Error{r.error, args[i].text, 0}};
+        values[i] = r.value;
+    }
+    if (!Bds5Tune::validBandwidth(int(values[0]))) return {Bds5Error{83, args[0].text, 0}};
+    if (Bds5Tune::damping(int(values[1])) == 0) return {Bds5Error{83, args[1].text, 0}};
+    if (m_state.motion.moving()) return {Bds5Error{57, joined(entries), 0}};
+    const bool remote = m_state.variables.read("REMOTE").value_or(1) != 0;
+    const int e = Bds5Tune::run(m_state.servo, m_state.variables, int(values[0]), int(values[1]), remote);
+    m_state.motion.zeroPositionError(double(m_state.servo.feedback_counts()));
+    if (e) return {Bds5Error{e, joined(entries), 0}};
     return {};
 }
 

@@ -10,13 +10,13 @@ void Bds5Macro::reset() {
     *this = Bds5Macro{};
 }
 
-void Bds5Macro::add(double duration_s, double accel_cps2) {
+void Bds5Macro::add(double duration_s, double accel_cps2, motion::SCurve shape) {
     if (duration_s <= 0) return;
-    m_segments.push_back({duration_s, accel_cps2, int(m_segments.size()) + 1});
+    m_segments.push_back({duration_s, accel_cps2, int(m_segments.size()) + 1, shape});
 }
 
 int Bds5Macro::addSection(double distance, std::optional<double> first, std::optional<double> second, double acc,
-                          double dec) {
+                          double dec, motion::SCurve shape) {
     if (m_closed) reset(); // a new definition after MCGO starts over (L2522)
     distance = std::round(distance);
     const double direction = distance < 0 ? -1.0 : 1.0;
@@ -39,9 +39,9 @@ int Bds5Macro::addSection(double distance, std::optional<double> first, std::opt
     const double cruise = std::abs(distance) - ramp1 - ramp2;
     if (cruise < -1e-9) return 42; // MOVE w/o TIME: the section cannot reach its speeds in its distance
     const auto before = m_segments;
-    add(std::abs(traverse - start) / rate1, direction * (traverse > start ? rate1 : -rate1));
+    add(std::abs(traverse - start) / rate1, direction * (traverse > start ? rate1 : -rate1), shape);
     add(std::max(cruise, 0.0) / traverse, 0);
-    add(std::abs(end - traverse) / rate2, direction * (end > traverse ? rate2 : -rate2));
+    add(std::abs(end - traverse) / rate2, direction * (end > traverse ? rate2 : -rate2), shape);
     if (int(m_segments.size()) > kMaxMacroSegments) {
         m_segments = before;
         return 47; // MCI/MCA TOO COMPLEX

@@ -20,6 +20,22 @@ double basic(const Bds5VariableStore& vars, const char* name) {
     const auto ref = cat::findVariable(name);
     return ref ? double(vars.read(*ref)) : 0.0;
 }
+
+// The variables step() reads every millisecond, resolved once.
+struct StepRefs {
+    cat::VariableRef gate, gatemode, plim, pfb, pmax, pmin, pcam;
+};
+const StepRefs& stepRefs() {
+    static const StepRefs r{*cat::findVariable("GATE"), *cat::findVariable("GATEMODE"), *cat::findVariable("PLIM"),
+                            *cat::findVariable("PFB"),  *cat::findVariable("PMAX"),     *cat::findVariable("PMIN"),
+                            *cat::findVariable("PCAM")};
+    return r;
+}
+
+// SCRV (Table 3.7): the shape of every accel and decel segment of the next command.
+motion::SCurve shape(const Bds5VariableStore& vars) {
+    return motion::sCurveFromLevel(int(basic(vars, "SCRV")));
+}
 } // namespace
 
 double Bds5Motion::rate(const Bds5VariableStore& vars, const char* name) const {
@@ -29,6 +45,7 @@ double Bds5Motion::rate(const Bds5VariableStore& vars, const char* name) const {
 int Bds5Motion::checkCanMove(const Bds5VariableStore& vars, bool enabled) const {
     if (!enabled) return 50;                   // DRIVE INHIBITED
     if (basic(vars, "MOTION") == 0) return 19; // MOTION (HDWR LINE)
+    if (m_cam.on()) return 57;                 // profiles are not allowed while camming (L9470; number chosen)
     return 0;
 }
 
@@ -45,7 +62,7 @@ int Bds5Motion::jog(const Bds5VariableStore& vars, bool enabled, std::int64_t ve
     const double dec = rate(vars, "DEC");
     if (std::abs(target - m_profile.velocity()) / std::min(acc, dec) > kMaxRampSeconds) return 32;
     if (velocity == 0 && !m_profile.moving()) return 0;
-    m_profile.jog({motion::MoveKind::Jog, 0, target, acc, dec});
+    m_profile.jog({motion::MoveKind::Jog, 0, target, acc, dec, shape(vars)});
     return 0;
 }
 
@@ -65,8 +82,8 @@ int Bds5Motion::move(const Bds5VariableStore& vars, bool enabled, std::int64_t t
     if (cps / acc > kMaxRampSeconds || cps / dec > kMaxRampSeconds) return 32; // checked before motion
     if (m_profile.jogging()) return 58;                                        // NOT w/JOGGING (L7307)
     if (m_profile.full()) return 30;
-    const double end = incremental ? std::round(m_profile.finalPosition()) + double(target) : double(target);
-    return m_profile.push({motion::MoveKind::Position, end, cps, acc, dec}) ? 0 : 30;
+    const double end = incremental ? std::round(m_profile.finalPosition()) + double(target) : toProfile(double(target));
+    return m_profile.push({motion::MoveKind::Position, end, cps, acc, dec, shape(vars)}) ? 0 : 30;
 }
 
 int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t position, std::int64_t velocity,
@@ -82,11 +99,11 @@ int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t 
     const double rate = std::abs(v1) > std::abs(v0) ? this->rate(vars, "ACC") : this->rate(vars, "DEC");
     const double rampTime = std::abs(v1 - v0) / rate;
     const double rampDistance = (v0 + v1) / 2 * rampTime;
-    const double ahead = double(position) - m_profile.position();
+    const double ahead = toProfile(double(position)) - m_profile.position();
     const double hold = to ? ahead - rampDistance : ahead; // JT: the ramp ends there; JF: it begins there
     if (hold * direction < 0) return 42;                   // MOVE w/o TIME: already passed
     if (rampTime > kMaxRampSeconds) return 32;
-    std::vector<motion::Segment> segments{{hold / v0, 0, 1}, {rampTime, v1 > v0 ? rate : -rate, 2}};
+    std::vector<motion::Segment> segments{{hold / v0, 0, 1}, {rampTime, v1 > v0 ? rate : -rate, 2, shape(vars)}};
     if (v1 != 0) segments.push_back({std::numeric_limits<double>::infinity(), 0, 3});
     const std::optional<double> end =
         v1 == 0 ? std::optional<double>(m_profile.position() + hold + rampDistance) : std::nullopt;
@@ -102,7 +119,7 @@ int Bds5Motion::moveRd(const Bds5VariableStore& vars, bool enabled, std::int64_t
     if (velocity <= 0 || velocity > std::int64_t(basic(vars, "VMAX"))) return 33;
     const std::int64_t perRev = 4096; // the reference 12-bit R/D
     if (rdPosition < 0 || rdPosition >= perRev) return 83;
-    const std::int64_t prd = ((std::llround(m_profile.position()) % perRev) + perRev) % perRev;
+    const std::int64_t prd = ((std::llround(commandPosition_counts()) % perRev) + perRev) % perRev;
     std::int64_t d = rdPosition - prd;
     if (direction > 0 && d < 0)
         d += perRev;
@@ -113,8 +130,8 @@ int Bds5Motion::moveRd(const Bds5VariableStore& vars, bool enabled, std::int64_t
     else if (direction == 0 && d <= -perRev / 2)
         d += perRev;
     const double cps = double(velocity) / kBasicPerCountPerSecond;
-    m_profile.push(
-        {motion::MoveKind::Position, m_profile.position() + double(d), cps, rate(vars, "ACC"), rate(vars, "DEC")});
+    m_profile.push({motion::MoveKind::Position, m_profile.position() + double(d), cps, rate(vars, "ACC"),
+                    rate(vars, "DEC"), shape(vars)});
     return 0;
 }
 
@@ -137,9 +154,10 @@ int Bds5Motion::macroSection(const Bds5VariableStore& vars, std::int64_t positio
         return v ? std::optional<double>(double(*v) / kBasicPerCountPerSecond) : std::nullopt;
     };
     if ((first && *first < 0) || (second && *second < 0)) return 83; // velocities are always positive
-    const double distance =
-        absolute ? double(positionOrDistance) - (m_macroStart + m_macro.definedDistance()) : double(positionOrDistance);
-    return m_macro.addSection(distance, speed(first), speed(second), rate(vars, "ACC"), rate(vars, "DEC"));
+    const double distance = absolute
+                                ? toProfile(double(positionOrDistance)) - (m_macroStart + m_macro.definedDistance())
+                                : double(positionOrDistance);
+    return m_macro.addSection(distance, speed(first), speed(second), rate(vars, "ACC"), rate(vars, "DEC"), shape(vars));
 }
 
 int Bds5Motion::macroDwell(std::int64_t ms) {
@@ -174,39 +192,69 @@ void Bds5Motion::halt() {
 
 int Bds5Motion::normalize(std::int64_t position) {
     if (m_profile.moving()) return 57;
-    m_profile.setPosition(double(position));
+    m_cam.stop();
+    m_profile.setPosition(toProfile(double(position)));
     return 0;
+}
+
+int Bds5Motion::normalizeCam(const Bds5VariableStore& vars, bool enabled, std::int64_t master_counts) {
+    if (!enabled) return 50;
+    if (const int e = checkNoGear(vars)) return e;
+    if (basic(vars, "ROTARY") != 0) return 59;
+    if (m_profile.moving()) return 57;
+    m_cam.start(master_counts, commandPosition_counts(), vars);
+    return 0;
+}
+
+void Bds5Motion::clampStop() {
+    if (m_profile.moving()) m_profile.start({}, m_profile.position());
 }
 
 int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
     // GATEMODE (L5949-5971): commanded motion waits for the GATE input to go high, then GATEMODE turns off.
     // Turning GATEMODE off first makes the drive forget the motion.
-    const bool gate = basic(vars, "GATE") != 0;
+    const StepRefs& r = stepRefs();
+    const bool gate = vars.read(r.gate) != 0;
     const bool rising = gate && !m_gateLast;
     m_gateLast = gate;
-    if (basic(vars, "GATEMODE") != 0) {
+    if (vars.read(r.gatemode) != 0) {
         m_profile.setHeld(true);
         if (m_profile.moving() && rising) {
             m_profile.setHeld(false);
-            vars.set("GATEMODE", 0);
+            vars.set(r.gatemode, 0);
         }
     } else if (m_profile.held()) {
         m_profile.setHeld(false);
         if (m_profile.moving() && m_profile.velocity() == 0) m_profile.stop(1);
     }
-    m_profile.step(double(dt.count()) / 1e6);
-    const double p = m_profile.position();
+    const Bds5Regulation::Tick regulated = m_regulation.step(vars, double(dt.count()) / 1e3);
+    if (regulated.error) {
+        stop(vars);
+        writeVariables(vars);
+        return regulated.error;
+    }
+    m_profileRate = regulated.profileFraction;
+    m_profile.step(double(dt.count()) / 1e6 * regulated.profileFraction);
+    if (const int e = m_gearbox.step(vars)) {
+        stop(vars);
+        writeVariables(vars);
+        return e;
+    }
+    const double p = commandPosition_counts();
     if (p > double(INT32_MAX) || p < double(INT32_MIN)) { // PFB ROLLOVER (L7234): beyond ±2,147,483,647
         halt();
-        m_profile.setPosition(std::clamp(p, double(INT32_MIN), double(INT32_MAX)));
+        m_profile.setPosition(toProfile(std::clamp(p, double(INT32_MIN), double(INT32_MAX))));
         writeVariables(vars);
         return 26;
     }
+    m_cam.step(commandPosition_counts(), vars, double(dt.count()) / 1e6);
     writeVariables(vars);
-    // Software limits (L2237-2259): beyond PMAX no positive motion, below PMIN no negative motion.
-    if (basic(vars, "PLIM") != 0 && m_profile.moving()) {
+    if (m_cam.on()) vars.set(r.pcam, std::int32_t(std::llround(m_cam.pcam_counts())));
+    // Software limits (L2237-2259): with PFB beyond PMAX no positive motion, below PMIN no negative motion.
+    if (vars.read(r.plim) != 0 && m_profile.moving()) {
         const double v = m_profile.velocity();
-        if ((v > 0 && p > basic(vars, "PMAX")) || (v < 0 && p < basic(vars, "PMIN"))) {
+        const double pfb = vars.read(r.pfb);
+        if ((v > 0 && pfb > vars.read(r.pmax)) || (v < 0 && pfb < vars.read(r.pmin))) {
             stop(vars);
             return 23;
         }
@@ -215,15 +263,28 @@ int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
 }
 
 void Bds5Motion::writeVariables(Bds5VariableStore& vars) const {
-    const auto position = std::int32_t(std::llround(m_profile.position()));
-    const auto velocity = std::int32_t(std::llround(m_profile.velocity() * kBasicPerCountPerSecond));
-    vars.set("PCMD", position);
-    vars.set("PFB", position);
-    vars.set("PE", 0);
-    vars.set("VCMD", velocity);
-    vars.set("VFB", velocity);
-    vars.set("SEG", m_profile.segment());
-    vars.set("PFNL", std::int32_t(std::llround(m_profile.finalPosition())));
+    const auto position = std::int32_t(std::llround(commandPosition_counts()));
+    const auto velocity = std::int32_t(std::llround(commandVelocity_cps() * kBasicPerCountPerSecond));
+    static const auto pcmd = cat::findVariable("PCMD");
+    static const auto vcmd = cat::findVariable("VCMD");
+    static const auto seg = cat::findVariable("SEG");
+    static const auto pfnl = cat::findVariable("PFNL");
+    static const auto cam = cat::findVariable("CAM");
+    vars.set(*cam, m_cam.on() ? 1 : 0);
+    vars.set(*pcmd, m_cam.on() ? std::int32_t(m_cam.pcmd_counts()) : position);
+    vars.set(*vcmd, velocity);
+    vars.set(*seg, m_profile.segment());
+    vars.set(*pfnl, std::int32_t(std::llround(m_profile.finalPosition() + double(m_gearbox.offset_counts()))));
+}
+
+void Bds5Motion::followFeedback(double pfb_counts) {
+    if (!m_profile.moving()) m_profile.setPosition(toProfile(pfb_counts));
+}
+
+int Bds5Motion::zeroPositionError(double pfb_counts) {
+    if (m_profile.moving()) return 57;
+    m_profile.setPosition(toProfile(pfb_counts));
+    return 0;
 }
 
 } // namespace drive_core::bds5

@@ -1,10 +1,13 @@
 // The BDS5's motion commands mapped onto the shared profile generator: units (basic velocity is 1/65536
 // count per ms, acceleration 1/65536 count per ms², §5.8), the checks the drive makes before moving
 // (ERR 19, 30, 32, 33, 50, 57), and the monitor variables it keeps (PCMD, PFB, VCMD, VFB, SEG, PFNL, PE).
-// Until the servo physics arrives (issue 4) the motor follows the command exactly: PFB = PCMD, PE = 0.
+// The motor follows through Bds5Servo, which writes the feedback side (PFB, VFB, PE).
 #pragma once
 
+#include "bds5_cam.h"
+#include "bds5_gearbox.h"
 #include "bds5_macro.h"
+#include "bds5_regulation.h"
 #include "bds5_variable_store.h"
 
 #include "drive_core/drive.h"
@@ -42,15 +45,36 @@ public:
     void stop(const Bds5VariableStore& vars);
     // DIS, K, faults that disable: the motor coasts; the command follows it to rest at once.
     void halt();
-    int normalize(std::int64_t position); // NORM / PFB=: 57 while motion is commanded
+    int normalize(std::int64_t position); // NORM / PFB=: 57 while motion is commanded; ends camming
+    // NORM <master> CAM (v3, L9430-9460): camming on, PCMD = master (mod 32768), PCAM from the table.
+    // 50 disabled, 56 GEAR on, 59 ROTARY on, 57 while motion is commanded. Then the servo's PFB := PCAM.
+    int normalizeCam(const Bds5VariableStore& vars, bool enabled, std::int64_t master_counts);
+    // Reset, disable, a disabling error (L9472-9476).
+    void camOff() { m_cam.stop(); }
+    bool camming() const { return m_cam.on(); }
+    // CLAMP (L2659-2732): the profile stops where it is (SEG 0, PCMD frozen); the loop keeps pushing.
+    void clampStop();
+    int zeroPositionError(double pfb_counts); // ZPE: PCMD := PFB; 57 while motion is commanded
+    // Disabled (L2115): PCMD follows PFB.
+    void followFeedback(double pfb_counts);
+    // The profile's command: PCMD with its fraction (counts) and its velocity (counts/s).
+    // PCMD is the profile plus the gearbox's offset (MI and J add to the gearbox, L2992-3004).
+    double commandPosition_counts() const { return m_profile.position() + double(m_gearbox.offset_counts()); }
+    // With REG on the profile's speed is scaled by the rate the external input lets it run at.
+    double commandVelocity_cps() const { return m_profile.velocity() * m_profileRate + m_gearbox.velocity_cps(); }
+    // What the position loop follows: PCAM while camming, else PCMD (and its velocity, for KF).
+    double servoTarget_counts() const { return m_cam.on() ? m_cam.pcam_counts() : commandPosition_counts(); }
+    double servoTargetVelocity_cps() const { return m_cam.on() ? m_cam.pcamVelocity_cps() : commandVelocity_cps(); }
 
     bool bufferFull() const { return m_profile.full(); }
     bool moving() const { return m_profile.moving(); }
     // W n on the last motion command (W 0: until motion has stopped).
     bool waitDone(int segment) const { return m_profile.reached(m_profile.lastId(), segment); }
 
-    // Advances the profile and writes the monitor variables. Returns an error the motion itself raised:
-    // 23 software overtravel (PFB beyond PMAX/PMIN with PLIM on, moving outward), 26 PFB rollover.
+    // Advances the profile and the gearbox and writes the monitor variables. Returns an error the motion
+    // itself raised: 23 software overtravel (PFB beyond PMAX/PMIN with PLIM on, moving outward), 26 PFB
+    // rollover, 97 gear overflow, 64 backward regulation. With REG on the profile runs at the external
+    // input's rate (Bds5Regulation).
     int step(Microseconds dt, Bds5VariableStore& vars);
 
 private:
@@ -59,8 +83,15 @@ private:
     int checkNoGear(const Bds5VariableStore& vars) const;
     double rate(const Bds5VariableStore& vars, const char* name) const; // ACC/DEC/AMAX in counts/s²
 
+    // Absolute positions (PCMD, PFB) to the profile's own and back: they differ by the gearbox offset.
+    double toProfile(double counts) const { return counts - double(m_gearbox.offset_counts()); }
+
     motion::ProfileGenerator m_profile;
+    Bds5Gearbox m_gearbox;
     Bds5Macro m_macro;
+    Bds5Regulation m_regulation;
+    double m_profileRate = 1; // the profile's clock rate over the last period (REG), 0..1
+    Bds5Cam m_cam;
     double m_macroStart = 0; // PFNL when the macro's first section was defined (for MCA)
     int m_macroId = 0;       // the profile id of the last MCGO (ERR 48 while it runs)
     bool m_gateLast = false; // the GATE input, for its rising edge

@@ -10,6 +10,9 @@ namespace cat = catalog::bds5;
 
 Bds5VariableStore::Bds5VariableStore() {
     const auto vars = cat::variables();
+    m_base = vars.data();
+    m_inWord = cat::findVariable("IN")->info;
+    m_outWord = cat::findVariable("OUT")->info;
     std::size_t next = 0;
     for (const cat::VariableInfo& v : vars) {
         m_firstSlot.push_back(next);
@@ -31,22 +34,25 @@ void Bds5VariableStore::powerUp() {
     }
 }
 
-std::size_t Bds5VariableStore::slot(const cat::VariableRef& ref) const {
-    const auto position = std::size_t(ref.info - cat::variables().data());
-    const std::size_t offset = ref.info->firstIndex == 0 ? 0 : std::size_t(ref.index - ref.info->firstIndex);
-    return m_firstSlot[position] + offset;
-}
-
 namespace {
-// The NUM/DEN pair of each unit class (Tables 4.11-4.16).
-std::optional<std::pair<const char*, const char*>> unitPair(cat::UnitClass unit) {
+// The NUM/DEN pair of each unit class (Tables 4.11-4.16), resolved once.
+std::optional<std::pair<cat::VariableRef, cat::VariableRef>> unitPair(cat::UnitClass unit) {
+    const auto pair = [](const char* num, const char* den) {
+        return std::pair{*cat::findVariable(num), *cat::findVariable(den)};
+    };
+    static const auto position = pair("PNUM", "PDEN");
+    static const auto velocity = pair("VNUM", "VDEN");
+    static const auto acceleration = pair("ANUM", "ADEN");
+    static const auto current = pair("INUM", "IDEN");
+    static const auto extPosition = pair("PXNUM", "PXDEN");
+    static const auto extVelocity = pair("VXNUM", "VXDEN");
     switch (unit) {
-    case cat::UnitClass::Position: return std::pair{"PNUM", "PDEN"};
-    case cat::UnitClass::Velocity: return std::pair{"VNUM", "VDEN"};
-    case cat::UnitClass::Acceleration: return std::pair{"ANUM", "ADEN"};
-    case cat::UnitClass::Current: return std::pair{"INUM", "IDEN"};
-    case cat::UnitClass::ExtPosition: return std::pair{"PXNUM", "PXDEN"};
-    case cat::UnitClass::ExtVelocity: return std::pair{"VXNUM", "VXDEN"};
+    case cat::UnitClass::Position: return position;
+    case cat::UnitClass::Velocity: return velocity;
+    case cat::UnitClass::Acceleration: return acceleration;
+    case cat::UnitClass::Current: return current;
+    case cat::UnitClass::ExtPosition: return extPosition;
+    case cat::UnitClass::ExtVelocity: return extVelocity;
     default: return std::nullopt;
     }
 }
@@ -68,32 +74,32 @@ std::optional<std::int64_t> scale(std::int64_t value, std::int64_t num, std::int
 std::optional<std::int64_t> Bds5VariableStore::toBasic(cat::UnitClass unit, std::int64_t user) const {
     const auto pair = unitPair(unit);
     if (!pair) return user;
-    return scale(user, read(*cat::findVariable(pair->first)), read(*cat::findVariable(pair->second)));
+    return scale(user, m_values[slot(pair->first)], m_values[slot(pair->second)]);
 }
 
 std::optional<std::int64_t> Bds5VariableStore::toUser(cat::UnitClass unit, std::int64_t basic) const {
     const auto pair = unitPair(unit);
     if (!pair) return basic;
-    return scale(basic, read(*cat::findVariable(pair->second)), read(*cat::findVariable(pair->first)));
+    return scale(basic, m_values[slot(pair->second)], m_values[slot(pair->first)]);
 }
 
 std::optional<std::int32_t> Bds5VariableStore::read(std::string_view upperName) const {
     const auto ref = cat::findVariable(upperName);
     if (!ref) return std::nullopt;
-    const std::int32_t basic = read(*ref);
-    const auto user = toUser(ref->info->unitClass, basic);
+    return readUser(*ref);
+}
+
+std::int32_t Bds5VariableStore::readUser(const cat::VariableRef& ref) const {
+    const std::int32_t basic = read(ref);
+    if (ref.info->unitClass == cat::UnitClass::None) return basic;
+    const auto user = toUser(ref.info->unitClass, basic);
     if (!user) return basic < 0 ? INT32_MIN : INT32_MAX;
     return std::int32_t(*user);
 }
 
-std::int32_t Bds5VariableStore::read(const cat::VariableRef& ref) const {
-    if (const auto w = word(ref)) return *w;
-    return m_values[slot(ref)];
-}
-
 std::optional<std::int32_t> Bds5VariableStore::word(const cat::VariableRef& ref) const {
-    const bool in = ref.info->name == "IN";
-    if (!in && ref.info->name != "OUT") return std::nullopt;
+    const bool in = ref.info == m_inWord;
+    if (!in && ref.info != m_outWord) return std::nullopt;
     const auto bits = cat::findVariable(in ? "I1" : "O1");
     if (!bits) return std::nullopt;
     const int count = bits->info->lastIndex;
@@ -130,10 +136,9 @@ int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, boo
     return 0;
 }
 
-void Bds5VariableStore::set(const cat::VariableRef& ref, std::int32_t value) {
-    if (ref.info->name == "OUT") return setBits("O", 8, value);
-    if (ref.info->name == "IN") return setBits("I", 16, value);
-    m_values[slot(ref)] = value;
+void Bds5VariableStore::setWord(const cat::VariableRef& ref, std::int32_t value) {
+    if (ref.info == m_outWord) return setBits("O", 8, value);
+    setBits("I", 16, value);
 }
 
 void Bds5VariableStore::set(std::string_view upperName, std::int32_t value) {

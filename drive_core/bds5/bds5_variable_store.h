@@ -22,8 +22,13 @@ public:
     // In user units; nullopt if there is no such variable. A value that overflows 32 bits in user units
     // reads as the nearest 32-bit value (ERR 96 is a write's error).
     std::optional<std::int32_t> read(std::string_view upperName) const;
-    // In basic units.
-    std::int32_t read(const catalog::bds5::VariableRef& ref) const;
+    // In basic units. Inline: the servo loop reads a score of variables every millisecond.
+    std::int32_t read(const catalog::bds5::VariableRef& ref) const {
+        if (ref.info == m_inWord || ref.info == m_outWord) return *word(ref);
+        return m_values[slot(ref)];
+    }
+    // In user units, for code that resolved the name once (it runs every millisecond).
+    std::int32_t readUser(const catalog::bds5::VariableRef& ref) const;
 
     // The drive's checks for a write (in user units) from the terminal or a program: 0 if accepted, else
     // the error number (80 unknown, 81 monitor variable, 111 factory, 51 needs disabled, 83 out of
@@ -36,15 +41,25 @@ public:
     std::optional<std::int64_t> toUser(catalog::bds5::UnitClass unit, std::int64_t basic) const;
 
     // Unchecked write, for the drive's own bookkeeping (monitor variables it maintains).
-    void set(const catalog::bds5::VariableRef& ref, std::int32_t value);
+    void set(const catalog::bds5::VariableRef& ref, std::int32_t value) {
+        if (ref.info == m_inWord || ref.info == m_outWord) return setWord(ref, value);
+        m_values[slot(ref)] = value;
+    }
     void set(std::string_view upperName, std::int32_t value);
 
 private:
     // IN and OUT are the words of the I1-I16 and O1-O8 switches (I1 = bit 0): one memory, two views.
     std::optional<std::int32_t> word(const catalog::bds5::VariableRef& ref) const;
     void setBits(std::string_view stem, int count, std::int32_t word);
-    std::size_t slot(const catalog::bds5::VariableRef& ref) const;
+    void setWord(const catalog::bds5::VariableRef& ref, std::int32_t value);
+    std::size_t slot(const catalog::bds5::VariableRef& ref) const {
+        const std::size_t offset = ref.info->firstIndex == 0 ? 0 : std::size_t(ref.index - ref.info->firstIndex);
+        return m_firstSlot[std::size_t(ref.info - m_base)] + offset;
+    }
 
+    const catalog::bds5::VariableInfo* m_base = nullptr;   // the catalog's first entry
+    const catalog::bds5::VariableInfo* m_inWord = nullptr; // IN and OUT: words of bits, not slots
+    const catalog::bds5::VariableInfo* m_outWord = nullptr;
     std::vector<std::size_t> m_firstSlot; // per catalog entry, its first slot in m_values
     std::vector<std::int32_t> m_values;
 };

@@ -1,4 +1,4 @@
-// Trapezoidal profiles from constant-acceleration segments.
+// Trapezoidal and S-curve profiles from acceleration segments.
 #include "profile_generator.h"
 
 #include <algorithm>
@@ -30,7 +30,8 @@ std::vector<Segment> ProfileGenerator::plan(double from, const MoveRequest& move
     } else {
         cruise = (d - k * v * v) / v;
     }
-    return {Segment{v / a, direction * a, 1}, Segment{cruise, 0, 2}, Segment{v / b, -direction * b, 3}};
+    return {Segment{v / a, direction * a, 1, move.shape}, Segment{cruise, 0, 2},
+            Segment{v / b, -direction * b, 3, move.shape}};
 }
 
 std::optional<int> ProfileGenerator::push(const MoveRequest& move) {
@@ -57,7 +58,7 @@ int ProfileGenerator::jog(const MoveRequest& jog) {
     const bool faster = std::abs(target) > std::abs(m_velocity);
     const double rate = reversing ? std::min(jog.accel_cps2, jog.decel_cps2) : faster ? jog.accel_cps2 : jog.decel_cps2;
     const double ramp = std::abs(change) / rate;
-    m.segments = {Segment{ramp, change < 0 ? -rate : rate, 1}};
+    m.segments = {Segment{ramp, change < 0 ? -rate : rate, 1, jog.shape}};
     if (target != 0) m.segments.push_back(Segment{kInfinity, 0, 2});
     m.segmentStartPosition = m_position;
     m.segmentStartVelocity = m_velocity;
@@ -112,6 +113,8 @@ void ProfileGenerator::stop(double decel_cps2) {
     m.segments = {Segment{std::abs(m_velocity) / decel_cps2, m_velocity > 0 ? -decel_cps2 : decel_cps2, 3}};
     m.segmentStartPosition = m_position;
     m.segmentStartVelocity = m_velocity;
+    // A stop is a position move to where the ramp ends (it must not "land" on a default target).
+    m.request.target_counts = m_position + m_velocity * std::abs(m_velocity) / (2 * decel_cps2);
     m_active = std::move(m);
 }
 
@@ -155,8 +158,15 @@ void ProfileGenerator::step(double dt_s) {
         m.elapsed_s += t;
         left -= t;
         const double e = m.elapsed_s;
-        m_position = m.segmentStartPosition + m.segmentStartVelocity * e + 0.5 * s.accel_cps2 * e * e;
-        m_velocity = m.segmentStartVelocity + s.accel_cps2 * e;
+        if (s.shape == SCurve::Straight || s.accel_cps2 == 0 || !(s.duration_s > 0)) {
+            m_position = m.segmentStartPosition + m.segmentStartVelocity * e + 0.5 * s.accel_cps2 * e * e;
+            m_velocity = m.segmentStartVelocity + s.accel_cps2 * e;
+        } else { // the same velocity change and distance as a straight line, shaped (s_curve.h)
+            const double T = s.duration_s, tau = e / T;
+            m_position = m.segmentStartPosition + m.segmentStartVelocity * e +
+                         s.accel_cps2 * T * T * sCurvePosition(s.shape, tau);
+            m_velocity = m.segmentStartVelocity + s.accel_cps2 * T * sCurveVelocity(s.shape, tau);
+        }
         if (m.elapsed_s < s.duration_s) break;
         // The segment is over: the next starts exactly where it ended.
         m.segmentStartPosition = m_position;
@@ -170,7 +180,9 @@ void ProfileGenerator::step(double dt_s) {
 
 double ProfileGenerator::acceleration() const {
     if (!m_active) return 0;
-    return m_active->segments[m_active->index].accel_cps2;
+    const Segment& s = m_active->segments[m_active->index];
+    if (s.shape == SCurve::Straight || s.accel_cps2 == 0 || !(s.duration_s > 0)) return s.accel_cps2;
+    return s.accel_cps2 * sCurveAcceleration(s.shape, m_active->elapsed_s / s.duration_s);
 }
 
 int ProfileGenerator::segment() const {

@@ -1,8 +1,10 @@
-// The motion profile generator shared by every drive family: trapezoidal moves and jogs built from
-// constant-acceleration segments, one move executing and one pending (BDS5 §7.3). Positions are evaluated
-// in closed form from the segment start, so a move lands exactly on its end position whatever dt is.
+// The motion profile generator shared by every drive family: moves and jogs built from acceleration
+// segments, straight-line or S-curve (s_curve.h), one move executing and one pending (BDS5 §7.3). Positions
+// are evaluated in closed form from the segment start, so a move lands exactly on its end position.
 // No Qt, no wall clock: time comes in through step(dt).
 #pragma once
+
+#include "s_curve.h"
 
 #include <deque>
 #include <optional>
@@ -20,14 +22,16 @@ struct MoveRequest {
     double target_counts = 0; // Position: the absolute end position
     double velocity_cps = 0;  // Position: traverse speed (> 0); Jog: signed speed
     double accel_cps2 = 1;    // > 0
-    double decel_cps2 = 1;    // > 0
+    double decel_cps2 = 1;    // > 0, average rates: S-curves keep the segment times of straight lines
+    SCurve shape = SCurve::Straight;
 };
 
-// One constant-acceleration piece of a profile.
+// One piece of a profile: its velocity changes by accel_cps2 * duration_s, along `shape`.
 struct Segment {
     double duration_s = 0; // +infinity for a jog's endless traverse
-    double accel_cps2 = 0;
-    int number = 1; // the drive's segment number (BDS5 SEG, Table 5.2)
+    double accel_cps2 = 0; // the average acceleration over the segment
+    int number = 1;        // the drive's segment number (BDS5 SEG, Table 5.2)
+    SCurve shape = SCurve::Straight;
 };
 
 class ProfileGenerator {

@@ -8,7 +8,7 @@
 namespace drive_core::physics {
 
 namespace {
-constexpr double kSubStep_s = 50e-6;         // RK4 sub-step: well under the current loop's time constant
+constexpr double kSubStep_s = 1e-3;          // RK4 sub-step for a rigid shaft (the current loop is exact)
 constexpr double kStickSpeed_radPerS = 1e-3; // Karnopp friction: below this speed the shaft may stick
 constexpr double kStickTime_s = 5e-4;        // a sticking shaft's leftover speed decays this fast
 
@@ -70,17 +70,28 @@ Plant::State Plant::derivative(const State& x, double current_A) const {
 void Plant::step(double dt_s, double currentCommand_A) {
     const double command = std::clamp(currentCommand_A, -m_motor.peakCurrent_A, m_motor.peakCurrent_A);
     const double tau = 1.0 / (2 * std::numbers::pi * m_motor.currentLoopBandwidth_Hz);
-    for (double left = dt_s; left > 1e-12;) {
-        const double h = std::min(kSubStep_s, left);
-        left -= h;
-        // The current loop, first order and exact over the sub-step; the mechanics by RK4 with the current
-        // taken at the sub-step's middle.
-        const double next = command + (m_current_A - command) * std::exp(-h / tau);
-        const double mid = 0.5 * (m_current_A + next);
-        const State k1 = derivative(m_x, mid);
-        const State k2 = derivative(m_x + 0.5 * h * k1, mid);
-        const State k3 = derivative(m_x + 0.5 * h * k2, mid);
-        const State k4 = derivative(m_x + h * k3, mid);
+    // The sub-step: a rigid shaft's own dynamics (friction sticking at 1/kStickTime_s) are slow enough for
+    // kSubStep_s; a compliant coupling needs a fraction of its resonance period.
+    double maxStep = kSubStep_s;
+    if (!rigid()) maxStep = std::min(maxStep, 0.05 / std::max(resonance_Hz(), 1.0));
+    const int steps = std::max(1, int(std::ceil(dt_s / maxStep - 1e-9)));
+    const double h = dt_s / steps;
+    if (h != m_decayStep_s || tau != m_decayTau_s) { // the same every servo period: computed once
+        m_decayStep_s = h;
+        m_decayTau_s = tau;
+        m_decay = std::exp(-h / tau);
+    }
+    const double decay = m_decay;
+    // The current loop is first order and exact over the sub-step; the mechanics go by RK4 with the
+    // current's exact mean over the sub-step.
+    const double meanFactor = tau / h * (1 - decay);
+    for (int i = 0; i < steps; ++i) {
+        const double next = command + (m_current_A - command) * decay;
+        const double mean = command + (m_current_A - command) * meanFactor;
+        const State k1 = derivative(m_x, mean);
+        const State k2 = derivative(m_x + 0.5 * h * k1, mean);
+        const State k3 = derivative(m_x + 0.5 * h * k2, mean);
+        const State k4 = derivative(m_x + h * k3, mean);
         m_x += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
         m_current_A = next;
     }

@@ -41,6 +41,7 @@ private:
     LoadParameters m_load;
     State m_x = State::Zero();
     double m_current_A = 0;
+    double m_decayStep_s = 0, m_decayTau_s = 0, m_decay = 0; // the current loop's decay over a sub-step
 };
 
 } // namespace drive_core::physics

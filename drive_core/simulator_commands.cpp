@@ -1,0 +1,114 @@
+// runSimulatorCommand(): the bench's text form, one command a line, for servodesk-sim's control socket
+// and tests. Grammar in simulator_controls.h; answers "OK", "ERROR <reason>" or the status line.
+#include "simulator_controls.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+namespace drive_core {
+
+namespace {
+std::vector<std::string> words(std::string_view line) {
+    std::vector<std::string> out;
+    std::istringstream in{std::string(line)};
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
+
+// "on"/"off" (also 1/0, true/false); nullopt otherwise.
+std::optional<bool> onOff(const std::string& word) {
+    if (word == "on" || word == "1" || word == "true") return true;
+    if (word == "off" || word == "0" || word == "false") return false;
+    return std::nullopt;
+}
+
+std::optional<double> number(const std::string& word) {
+    char* end = nullptr;
+    const double value = std::strtod(word.c_str(), &end);
+    if (word.empty() || end != word.c_str() + word.size()) return std::nullopt;
+    return value;
+}
+
+std::string bits(const std::vector<bool>& values) {
+    std::string s;
+    for (const bool b : values) s += b ? '1' : '0';
+    return s;
+}
+
+std::string format(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    return buffer;
+}
+
+// One line of key=value pairs; inputs and outputs as bit strings, I1 / O1 first.
+std::string statusLine(const SimulatorStatus& s) {
+    return "inputs=" + bits(s.inputs) + " outputs=" + bits(s.outputs) + " enable=" + (s.enableInput ? "1" : "0") +
+           " motion=" + (s.motionInput ? "1" : "0") + " home=" + (s.homeSwitch ? "1" : "0") +
+           " limit_pos=" + (s.positiveLimit ? "1" : "0") + " limit_neg=" + (s.negativeLimit ? "1" : "0") +
+           " active=" + (s.active ? "1" : "0") + " fault=" + (s.fault ? "1" : "0") +
+           " position_rev=" + format(s.position_rev) + " velocity_rpm=" + format(s.velocity_rpm) +
+           " current_a=" + format(s.current_a) + " load_torque_nm=" + format(s.loadTorque_Nm) +
+           " load_inertia_kgm2=" + format(s.loadInertia_kgm2) + " master_hz=" + format(s.masterFrequency_Hz) +
+           " motor=" + s.motorName + " feedback=" + (s.feedbackConnected ? "1" : "0") +
+           " relay=" + (s.relayClosed ? "1" : "0") + " brake_released=" + (s.brakeReleased ? "1" : "0");
+}
+} // namespace
+
+std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line) {
+    const std::vector<std::string> w = words(line);
+    if (w.empty()) return "ERROR empty command";
+    const std::string& verb = w[0];
+    const auto arity = [&](std::size_t n) { return w.size() == n + 1; };
+    if (verb == "status" && arity(0)) return statusLine(controls.status());
+    if (verb == "power-cycle" && arity(0)) {
+        controls.powerCycle();
+        return "OK";
+    }
+    if (verb == "input" && arity(2)) {
+        const auto n = number(w[1]);
+        const auto state = onOff(w[2]);
+        const int count = int(controls.status().inputs.size());
+        if (!n || *n != double(int(*n)) || *n < 1 || *n > count)
+            return "ERROR input number must be 1.." + std::to_string(count);
+        if (!state) return "ERROR expected on or off";
+        controls.setInput(int(*n), *state);
+        return "OK";
+    }
+    if ((verb == "enable" || verb == "motion" || verb == "home" || verb == "feedback") && arity(1)) {
+        const auto state = onOff(w[1]);
+        if (!state) return "ERROR expected on or off";
+        if (verb == "enable") controls.setEnableInput(*state);
+        if (verb == "motion") controls.setMotionInput(*state);
+        if (verb == "home") controls.setHomeSwitch(*state);
+        if (verb == "feedback") controls.setFeedbackConnected(*state);
+        return "OK";
+    }
+    if (verb == "limits" && arity(2)) {
+        const auto positive = onOff(w[1]);
+        const auto negative = onOff(w[2]);
+        if (!positive || !negative) return "ERROR expected limits on|off on|off";
+        controls.setLimitSwitches(*positive, *negative);
+        return "OK";
+    }
+    if ((verb == "home-at" || verb == "load-torque" || verb == "load-inertia" || verb == "master-hz") && arity(1)) {
+        const auto value = number(w[1]);
+        if (!value) return "ERROR expected a number";
+        if (verb == "load-inertia" && *value < 0) return "ERROR inertia must not be negative";
+        if (verb == "home-at") controls.setHomeSwitchPosition_rev(*value);
+        if (verb == "load-torque") controls.setLoadTorque_Nm(*value);
+        if (verb == "load-inertia") controls.setLoadInertia_kgm2(*value);
+        if (verb == "master-hz") controls.setMasterFrequency_Hz(*value);
+        return "OK";
+    }
+    if (verb == "motor" && arity(1)) return controls.selectMotor(w[1]) ? "OK" : "ERROR unknown motor " + w[1];
+    for (const char* known : {"status", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at",
+                              "load-torque", "load-inertia", "master-hz", "motor", "feedback"})
+        if (verb == known) return "ERROR wrong number of arguments for " + verb;
+    return "ERROR unknown command " + verb;
+}
+
+} // namespace drive_core
