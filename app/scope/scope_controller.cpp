@@ -1,0 +1,235 @@
+// ScopeController: the Scope menu's actions.
+#include "scope_controller.h"
+
+#include "capture_table_model.h"
+#include "drive_connection.h"
+#include "main_window.h"
+#include "record_dialog.h"
+#include "scope_catalog.h"
+#include "scope_view.h"
+#include "terminal_dock.h"
+#include "transfer_dialog.h"
+#include "transfer_reporter.h"
+#include "tuning_panel.h"
+
+#include "scope/capture_csv.h"
+#include "scope/play_parser.h"
+#include "scope/scope_plot.h"
+
+#include <qcustomplot.h>
+
+#include <QDateTime>
+#include <QDialog>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QMenu>
+#include <QPainter>
+#include <QPrintDialog>
+#include <QPrinter>
+#include <QStatusBar>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace app {
+
+namespace {
+constexpr int kStatusMs = 15000;
+const QString kCsvFilter = QObject::tr("Scope data (*.csv *.CSV);;All files (*)");
+
+std::vector<std::string> toStd(const QStringList& lines) {
+    std::vector<std::string> out;
+    out.reserve(std::size_t(lines.size()));
+    for (const QString& l : lines) out.push_back(l.toStdString());
+    return out;
+}
+} // namespace
+
+ScopeController::ScopeController(MainWindow& window)
+    : QObject(&window), m_window(window), m_menu(new QMenu(tr("S&cope"), &window)),
+      m_scopeDock(new QDockWidget(tr("Scope"), &window)), m_tuningDock(new QDockWidget(tr("Tuning"), &window)),
+      m_view(new ScopeView(m_scopeDock)), m_tuning(new TuningPanel(window, m_tuningDock)) {
+    m_menu->setObjectName(QStringLiteral("scopeMenu"));
+    m_scopeDock->setObjectName(QStringLiteral("scopeDock"));
+    m_scopeDock->setWidget(m_view);
+    m_tuningDock->setObjectName(QStringLiteral("tuningDock"));
+    m_tuningDock->setWidget(m_tuning);
+
+    m_menu->addAction(tr("From &Drive..."), QKeySequence(tr("Ctrl+Shift+R")), this, &ScopeController::fromDrive);
+    m_menu->addAction(tr("View &Again"), this, &ScopeController::viewAgain);
+    m_menu->addAction(tr("From Dis&k..."), this, &ScopeController::openFromDisk);
+    m_menu->addAction(tr("&Save CSV..."), this, &ScopeController::saveCsvAs);
+    m_menu->addSeparator();
+    m_menu->addAction(tr("View D&ata"), this, &ScopeController::viewData);
+    m_menu->addAction(tr("&Print Plot..."), this, &ScopeController::printPlot);
+    m_menu->addAction(tr("&Export Plot (PDF, PNG, SVG)..."), this, &ScopeController::exportPlot);
+    m_menu->addSeparator();
+    m_menu->addAction(m_scopeDock->toggleViewAction());
+    QAction* tuning = m_tuningDock->toggleViewAction();
+    tuning->setText(tr("&Tuning Panel"));
+    m_menu->addAction(tuning);
+}
+
+void ScopeController::status(const QString& message) {
+    m_window.statusBar()->showMessage(message, kStatusMs);
+}
+
+void ScopeController::fromDrive() {
+    auto* dialog = new RecordDialog(&m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { record(dialog->plan()); });
+    dialog->open();
+}
+
+void ScopeController::record(const serialport::Bds5RecordPlan& plan) {
+    if (!TransferReporter::canStart(m_window)) return;
+    auto* transfer = new serialport::Bds5RecordPlay(*m_window.connection().session(), plan);
+    new TransferDialog(tr("Scope From Drive"), transfer, &m_window);
+    connect(transfer, &serialport::Bds5Transfer::finished, this, [this](const serialport::Bds5TransferResult& r) {
+        status(r.summary);
+        if (r.ok()) {
+            const auto parsed = scope::parsePlay(toStd(r.lines), unitOf);
+            if (!parsed.capture) {
+                status(tr("PLAY could not be read: %1").arg(QString::fromStdString(parsed.error)));
+            } else {
+                scope::Capture capture = *parsed.capture;
+                capture.title = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")).toStdString();
+                show(capture);
+            }
+        }
+        emit recordFinished(r);
+    });
+    transfer->start();
+}
+
+// The Scope dock shows tabbed with the terminal (tabified only now: a hidden tab in the terminal's group
+// would take the terminal's size until then).
+void ScopeController::raiseScopeDock() {
+    if (!m_scopeDock->isVisible() && !m_scopeDock->isFloating())
+        m_window.tabifyDockWidget(m_window.terminalDock(), m_scopeDock);
+    m_scopeDock->show();
+    m_scopeDock->raise();
+}
+
+void ScopeController::show(const scope::Capture& capture) {
+    m_last = capture;
+    raiseScopeDock();
+    m_view->showCapture(capture, true);
+    emit captureShown(capture);
+}
+
+void ScopeController::viewAgain() {
+    if (!m_last) return status(tr("Nothing recorded yet: use Scope > From Drive or From Disk."));
+    raiseScopeDock();
+    m_view->showCapture(*m_last, false);
+}
+
+void ScopeController::openFromDisk() {
+    auto* dialog = new QFileDialog(&m_window, tr("Open Scope Data"), QString(), kCsvFilter);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setFileMode(QFileDialog::ExistingFile);
+    connect(dialog, &QFileDialog::fileSelected, this, [this](const QString& path) { loadCsv(path); });
+    dialog->open();
+}
+
+bool ScopeController::loadCsv(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        status(tr("Cannot open %1: %2").arg(path, file.errorString()));
+        return false;
+    }
+    const auto r = scope::readCsv(file.readAll().toStdString());
+    if (!r.capture) {
+        status(tr("%1 is not scope data: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(r.error)));
+        return false;
+    }
+    scope::Capture capture = *r.capture;
+    capture.title = QFileInfo(path).fileName().toStdString();
+    show(capture);
+    status(tr("Opened %1: %2 samples").arg(QFileInfo(path).fileName()).arg(capture.sampleCount()));
+    return true;
+}
+
+void ScopeController::saveCsvAs() {
+    if (!m_last) return status(tr("Nothing to save: record or open scope data first."));
+    auto* dialog = new QFileDialog(&m_window, tr("Save Scope Data"), QStringLiteral("scope.csv"), kCsvFilter);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setAcceptMode(QFileDialog::AcceptSave);
+    dialog->setDefaultSuffix(QStringLiteral("csv"));
+    connect(dialog, &QFileDialog::fileSelected, this, [this](const QString& path) { saveCsv(path); });
+    dialog->open();
+}
+
+bool ScopeController::saveCsv(const QString& path) {
+    if (!m_last) return false;
+    QFile file(path);
+    const bool ok = file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+                    file.write(QByteArray::fromStdString(scope::writeCsv(*m_last))) >= 0;
+    status(ok ? tr("Saved %1").arg(QFileInfo(path).fileName())
+              : tr("Cannot write %1: %2").arg(path, file.errorString()));
+    return ok;
+}
+
+QDialog* ScopeController::viewData() {
+    if (!m_last) {
+        status(tr("Nothing recorded yet: use Scope > From Drive or From Disk."));
+        return nullptr;
+    }
+    auto* dialog = new QDialog(&m_window);
+    dialog->setObjectName(QStringLiteral("scopeDataDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Scope Data \u2014 %1").arg(QString::fromStdString(m_last->title)));
+    auto* layout = new QVBoxLayout(dialog);
+    auto* table = new QTableView(dialog);
+    table->setModel(new CaptureTableModel(*m_last, table));
+    table->setAlternatingRowColors(true);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
+    layout->addWidget(table);
+    dialog->resize(560, 520);
+    dialog->show();
+    return dialog;
+}
+
+void ScopeController::printPlot() {
+    auto* printer = new QPrinter(QPrinter::HighResolution);
+    printer->setPageOrientation(QPageLayout::Landscape);
+    auto* dialog = new QPrintDialog(printer, &m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::finished, this, [printer] { delete printer; });
+    connect(dialog, &QDialog::accepted, this, [this, printer] {
+        QCustomPlot* plot = m_view->plot()->customPlot();
+        QCPPainter painter(printer);
+        const QRectF page = printer->pageRect(QPrinter::DevicePixel);
+        const double scale = page.width() / plot->width();
+        painter.setMode(QCPPainter::pmVectorized);
+        painter.setMode(QCPPainter::pmNoCaching);
+        painter.scale(scale, scale);
+        plot->toPainter(&painter, plot->width(), int(page.height() / scale));
+        status(tr("Plot sent to the printer."));
+    });
+    dialog->open();
+}
+
+void ScopeController::exportPlot() {
+    auto* dialog = new QFileDialog(&m_window, tr("Export Plot"), QStringLiteral("scope.pdf"),
+                                   tr("PDF (*.pdf);;PNG image (*.png);;SVG drawing (*.svg)"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setAcceptMode(QFileDialog::AcceptSave);
+    connect(dialog, &QFileDialog::fileSelected, this, [this](const QString& path) { exportTo(path); });
+    dialog->open();
+}
+
+bool ScopeController::exportTo(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    scope::ScopePlot* plot = m_view->plot();
+    const bool ok = suffix == QLatin1String("png")   ? plot->savePng(path)
+                    : suffix == QLatin1String("svg") ? plot->saveSvg(path)
+                                                     : plot->savePdf(path);
+    status(ok ? tr("Exported the plot to %1").arg(QFileInfo(path).fileName()) : tr("Cannot write %1").arg(path));
+    return ok;
+}
+
+} // namespace app

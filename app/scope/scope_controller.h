@@ -1,0 +1,66 @@
+// ScopeController: Motion Link's SCOPE menu and the Scope dock — From Drive (RECORD set-up, trigger, PLAY
+// with progress and cancel), View Again, From Disk / Save (.CSV), View Data (table), Print Plot, PDF, PNG
+// and SVG export — and the Tuning panel dock. MainWindow constructs it and adds menu() and the docks.
+// GUI thread only.
+#pragma once
+
+#include "scope/capture.h"
+#include "serialport/bds5_record_play.h"
+
+#include <QObject>
+
+#include <optional>
+
+class QDialog;
+class QDockWidget;
+class QMenu;
+
+namespace app {
+
+class MainWindow;
+class ScopeView;
+class TuningPanel;
+
+class ScopeController final : public QObject {
+    Q_OBJECT
+public:
+    explicit ScopeController(MainWindow& window);
+
+    QMenu* menu() const { return m_menu; }
+    QDockWidget* scopeDock() const { return m_scopeDock; }
+    QDockWidget* tuningDock() const { return m_tuningDock; }
+    ScopeView* view() const { return m_view; }
+    TuningPanel* tuningPanel() const { return m_tuning; }
+    const std::optional<scope::Capture>& lastCapture() const { return m_last; }
+
+    void fromDrive();                                    // the RECORD set-up dialog, then record()
+    void record(const serialport::Bds5RecordPlan& plan); // RECORD + trigger + PLAY, shown when done
+    void viewAgain();
+    void openFromDisk();
+    bool loadCsv(const QString& path);
+    void saveCsvAs();
+    bool saveCsv(const QString& path);
+    QDialog* viewData(); // non-modal table of the last capture; nullptr when there is none
+    void printPlot();
+    void exportPlot(); // PDF, PNG or SVG by the chosen file's suffix
+    bool exportTo(const QString& path);
+
+signals:
+    void captureShown(const scope::Capture& capture);
+    void recordFinished(const serialport::Bds5TransferResult& result);
+
+private:
+    void show(const scope::Capture& capture);
+    void raiseScopeDock();
+    void status(const QString& message);
+
+    MainWindow& m_window;
+    QMenu* m_menu;
+    QDockWidget* m_scopeDock;
+    QDockWidget* m_tuningDock;
+    ScopeView* m_view;
+    TuningPanel* m_tuning;
+    std::optional<scope::Capture> m_last;
+};
+
+} // namespace app

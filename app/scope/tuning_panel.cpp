@@ -1,0 +1,293 @@
+// TuningPanel: layout and wiring; the runs table.
+#include "tuning_panel.h"
+
+#include "drive_connection.h"
+#include "gain_editor.h"
+#include "main_window.h"
+#include "scope_view.h"
+
+#include <QComboBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace app {
+
+namespace {
+const QStringList kRunColumns = {QStringLiteral("Run"),         QStringLiteral("Gains changed"),
+                                 QStringLiteral("Overshoot %"), QStringLiteral("Rise (ms)"),
+                                 QStringLiteral("Settle (ms)"), QStringLiteral("SS error"),
+                                 QStringLiteral("Cycle (s)"),   QStringLiteral("\u00d7 ideal")};
+const int kBandwidths[] = {5, 10, 15, 20, 25, 30, 40, 50}; // Hz, the values TUNE allows (L6283)
+
+QString ms(const std::optional<double>& s) {
+    return s ? QString::number(*s * 1000, 'f', 1) : QStringLiteral("\u2014");
+}
+} // namespace
+
+TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
+    : QWidget(parent), m_window(window), m_runner(new TuningRunner(window.connection(), this)),
+      m_view(new ScopeView(this)), m_runsTable(new QTableWidget(this)) {
+    setObjectName(QStringLiteral("tuningPanel"));
+    auto* controls = new QWidget;
+    auto* left = new QVBoxLayout(controls);
+    left->setContentsMargins(4, 4, 4, 4);
+    left->addWidget(buildGains());
+    left->addWidget(buildTestMove());
+    left->addWidget(buildTune());
+    left->addStretch(1);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(controls);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(340);
+    scroll->setMaximumWidth(400);
+
+    m_runsTable->setObjectName(QStringLiteral("tuningRuns"));
+    m_runsTable->setColumnCount(int(kRunColumns.size()));
+    m_runsTable->setHorizontalHeaderLabels(kRunColumns);
+    m_runsTable->verticalHeader()->hide();
+    m_runsTable->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_runsTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_runsTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_runsTable->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_undo = new QPushButton(tr("Undo to Selected Run's Gains"), this);
+    auto* save = new QPushButton(tr("Save Gains .VAR..."), this);
+    auto* runsBox = new QWidget(this);
+    auto* runsLayout = new QVBoxLayout(runsBox);
+    runsLayout->setContentsMargins(0, 0, 0, 0);
+    runsLayout->addWidget(m_runsTable, 1);
+    auto* runsButtons = new QHBoxLayout;
+    runsButtons->addWidget(m_undo);
+    runsButtons->addWidget(save);
+    runsButtons->addStretch(1);
+    runsLayout->addLayout(runsButtons);
+
+    auto* right = new QSplitter(Qt::Vertical, this);
+    right->addWidget(m_view);
+    right->addWidget(runsBox);
+    right->setStretchFactor(0, 3);
+    right->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(scroll);
+    layout->addWidget(right, 1);
+
+    connect(m_undo, &QPushButton::clicked, this, [this] {
+        const int row = m_runsTable->currentRow();
+        if (row >= 0) m_runner->undoTo(m_runsTable->item(row, 0)->text().toInt());
+    });
+    connect(save, &QPushButton::clicked, this, &TuningPanel::saveGainsAs);
+    connect(m_runner, &TuningRunner::gainConfirmed, this, [this](const QString& name, int value) {
+        if (GainEditor* e = m_editors.value(name)) {
+            e->setValue(value); // also when the change came from elsewhere (undo, a preset)
+            e->setConfirmed(true);
+        }
+    });
+    connect(m_runner, &TuningRunner::gainRefused, this, [this](const QString& name, const QString& why) {
+        if (GainEditor* e = m_editors.value(name)) e->setConfirmed(false, why);
+        setStatus(tr("The drive refused %1: %2").arg(name, why));
+    });
+    connect(m_runner, &TuningRunner::gainsRead, this, [this](const QMap<QString, int>& gains) {
+        for (auto it = gains.begin(); it != gains.end(); ++it)
+            if (GainEditor* e = m_editors.value(it.key())) {
+                e->setValue(it.value());
+                e->setConfirmed(true);
+            }
+    });
+    connect(m_runner, &TuningRunner::runStarted, this,
+            [this](int n) { setStatus(tr("Run %1: %2").arg(n).arg(m_runner->testMove().description())); });
+    connect(m_runner, &TuningRunner::progress, this, [this](int done, int total) {
+        m_progress->setMaximum(std::max(total, 1));
+        m_progress->setValue(done);
+    });
+    connect(m_runner, &TuningRunner::runFinished, this, &TuningPanel::addRun);
+    connect(m_runner, &TuningRunner::runFailed, this, &TuningPanel::setStatus);
+    connect(m_runner, &TuningRunner::message, this, &TuningPanel::setStatus);
+    connect(m_runner, &TuningRunner::stateChanged, this, &TuningPanel::updateButtons);
+    // The editors show the drive's gains from the start (the read waits in the session's queue).
+    connect(&window.connection(), &DriveConnection::connectedChanged, m_runner, [this](bool connected) {
+        if (connected) m_runner->readGains();
+    });
+    applyTestMove();
+    updateButtons();
+}
+
+QWidget* TuningPanel::buildGains() {
+    auto* box = new QGroupBox(tr("Gains"), this);
+    auto* form = new QFormLayout(box);
+    for (const GainInfo& g : tuningGains()) {
+        auto* editor = new GainEditor(g, box);
+        m_editors.insert(g.name, editor);
+        form->addRow(g.name, editor);
+        connect(editor, &GainEditor::edited, m_runner, &TuningRunner::setGain);
+    }
+    auto* read = new QPushButton(tr("Read from Drive"), box);
+    connect(read, &QPushButton::clicked, m_runner, &TuningRunner::readGains);
+    form->addRow(read);
+    return box;
+}
+
+QWidget* TuningPanel::buildTestMove() {
+    auto* box = new QGroupBox(tr("Test move"), this);
+    auto* form = new QFormLayout(box);
+    m_moveKind = new QComboBox(box);
+    for (const auto kind : {TestMove::Kind::VelocityStep, TestMove::Kind::PositionStep, TestMove::Kind::BackAndForth})
+        m_moveKind->addItem(TestMove::kindName(kind), int(kind));
+    m_amplitude = new QSpinBox(box);
+    m_amplitude->setRange(1, 1'000'000);
+    m_amplitude->setValue(1000);
+    m_amplitude->setToolTip(tr("Velocity (J) or counts (MI). Keep it small enough that ICMD stays below ILIM."));
+    m_duration = new QSpinBox(box);
+    m_duration->setRange(10, 10'000);
+    m_duration->setValue(150);
+    m_duration->setSuffix(tr(" ms"));
+    form->addRow(tr("Preset"), m_moveKind);
+    form->addRow(tr("Amplitude"), m_amplitude);
+    form->addRow(tr("Hold"), m_duration);
+    connect(m_moveKind, &QComboBox::currentIndexChanged, this, &TuningPanel::applyTestMove);
+    connect(m_amplitude, &QSpinBox::valueChanged, this, &TuningPanel::applyTestMove);
+    connect(m_duration, &QSpinBox::valueChanged, this, &TuningPanel::applyTestMove);
+    m_runOnce = new QPushButton(tr("Run Once"), box);
+    m_runLoop = new QPushButton(tr("Run Continuously"), box);
+    m_stop = new QPushButton(tr("Stop"), box);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_runOnce);
+    buttons->addWidget(m_runLoop);
+    buttons->addWidget(m_stop);
+    form->addRow(buttons);
+    m_progress = new QProgressBar(box);
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumHeight(8);
+    form->addRow(m_progress);
+    m_status = new QLabel(box);
+    m_status->setObjectName(QStringLiteral("tuningStatus"));
+    m_status->setWordWrap(true);
+    form->addRow(m_status);
+    m_warning = new QLabel(box);
+    m_warning->setWordWrap(true);
+    m_warning->setStyleSheet(QStringLiteral("color: #b3261e"));
+    m_warning->hide();
+    form->addRow(m_warning);
+    connect(m_runOnce, &QPushButton::clicked, m_runner, &TuningRunner::runOnce);
+    connect(m_runLoop, &QPushButton::clicked, m_runner, &TuningRunner::runContinuously);
+    connect(m_stop, &QPushButton::clicked, m_runner, &TuningRunner::stop);
+    return box;
+}
+
+QWidget* TuningPanel::buildTune() {
+    auto* box = new QGroupBox(tr("TUNE (self-tuning)"), this);
+    auto* form = new QFormLayout(box);
+    m_bandwidth = new QComboBox(box);
+    for (const int hz : kBandwidths) m_bandwidth->addItem(tr("%1 Hz").arg(hz), hz);
+    m_bandwidth->setCurrentIndex(5); // 30 Hz, the manual's example
+    m_stability = new QComboBox(box);
+    m_stability->addItem(tr("1 \u2014 slightly overdamped"), 1);
+    m_stability->addItem(tr("2 \u2014 critically damped"), 2);
+    m_stability->addItem(tr("3 \u2014 slightly underdamped"), 3);
+    m_stability->setCurrentIndex(1);
+    form->addRow(tr("Bandwidth"), m_bandwidth);
+    form->addRow(tr("Stability"), m_stability);
+    auto* warning = new QLabel(tr("<b>Warning:</b> the drive will be enabled and the motor will turn. TUNE shakes "
+                                  "the motor vigorously at about 15 Hz and full torque: secure the motor, and "
+                                  "reduce ILIM first if the machine could be damaged or overspeed (restore it "
+                                  "afterwards)."),
+                               box);
+    warning->setWordWrap(true);
+    form->addRow(warning);
+    auto* tune = new QPushButton(tr("TUNE"), box);
+    connect(tune, &QPushButton::clicked, this,
+            [this] { m_runner->tune(m_bandwidth->currentData().toInt(), m_stability->currentData().toInt()); });
+    form->addRow(tune);
+    return box;
+}
+
+void TuningPanel::applyTestMove() {
+    TestMove move;
+    move.kind = TestMove::Kind(m_moveKind->currentData().toInt());
+    move.amplitude = m_amplitude->value();
+    move.durationMs = m_duration->value();
+    m_runner->setTestMove(move);
+    m_moveKind->setToolTip(move.plan().recordLine() + QStringLiteral(" \u2014 ") + move.description());
+}
+
+void TuningPanel::setTestMove(const TestMove& move) {
+    m_moveKind->setCurrentIndex(m_moveKind->findData(int(move.kind)));
+    m_amplitude->setValue(move.amplitude);
+    m_duration->setValue(move.durationMs);
+    applyTestMove();
+}
+
+void TuningPanel::addRun(const TuningRun& run) {
+    m_view->showCapture(run.capture, true);
+    const int row = m_runsTable->rowCount();
+    m_runsTable->insertRow(row);
+    const QString changed = QString::fromStdString(run.capture.title).section(QStringLiteral(": "), 1);
+    const QStringList cells = {QString::number(run.number),
+                               changed.isEmpty() ? tr("(first)") : changed,
+                               run.metrics.hasStep ? QString::number(run.metrics.overshoot_pct, 'f', 1)
+                                                   : QStringLiteral("\u2014"),
+                               ms(run.metrics.rise_s),
+                               ms(run.metrics.settling_s),
+                               run.metrics.steadyStateError ? QString::number(*run.metrics.steadyStateError, 'f', 1)
+                                                            : QStringLiteral("\u2014"),
+                               QString::number(run.cycle_s, 'f', 2),
+                               QString::number(run.cycle_s / std::max(run.ideal_s, 1e-9), 'f', 2)};
+    for (int c = 0; c < int(cells.size()); ++c) {
+        auto* item = new QTableWidgetItem(cells[c]);
+        item->setTextAlignment(c == 1 ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
+        m_runsTable->setItem(row, c, item);
+    }
+    m_runsTable->scrollToBottom();
+    m_progress->setValue(m_progress->maximum());
+    m_warning->setVisible(run.currentSaturated);
+    m_warning->setText(tr("ICMD reached ILIM in run %1: the current saturated, so the step shows the current "
+                          "limit rather than the loop. Lower the amplitude.")
+                           .arg(run.number));
+    setStatus(tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
+                  .arg(run.number)
+                  .arg(run.metrics.overshoot_pct, 0, 'f', 1)
+                  .arg(ms(run.metrics.rise_s), ms(run.metrics.settling_s)));
+}
+
+void TuningPanel::updateButtons() {
+    m_runOnce->setEnabled(!m_runner->isRunning());
+    m_runLoop->setEnabled(!m_runner->isContinuous());
+    m_stop->setEnabled(m_runner->isRunning());
+}
+
+void TuningPanel::setStatus(const QString& text) {
+    m_status->setText(text);
+}
+
+QString TuningPanel::statusText() const {
+    return m_status->text();
+}
+
+void TuningPanel::saveGainsAs() {
+    auto* dialog = new QFileDialog(this, tr("Save Gains"), QStringLiteral("gains.var"),
+                                   tr("Variable sets (*.var *.VAR);;All files (*)"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setAcceptMode(QFileDialog::AcceptSave);
+    dialog->setDefaultSuffix(QStringLiteral("var"));
+    connect(dialog, &QFileDialog::fileSelected, this, [this](const QString& path) {
+        QFile file(path);
+        const bool ok =
+            file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(m_runner->gainsAsVar().toLatin1()) >= 0;
+        setStatus(ok ? tr("Saved the gains to %1.").arg(path) : tr("Cannot write %1.").arg(path));
+    });
+    dialog->open();
+}
+
+} // namespace app

@@ -1,0 +1,67 @@
+// TuningPanel: the Tuning dock — gains (spin boxes + sliders bounded by the catalog, each change sent and
+// confirmed), a test move preset, Run once / Run continuously / Stop, the runs' overlays on a scope with
+// measurements, a per-run table (overshoot, rise, settle, cycle time) with undo to any run's gains and
+// Save .VAR, and TUNE with the manual's warning. The drive work is TuningRunner's. GUI thread only.
+#pragma once
+
+#include "tuning_runner.h"
+
+#include <QMap>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace app {
+
+class GainEditor;
+class MainWindow;
+class ScopeView;
+
+class TuningPanel final : public QWidget {
+    Q_OBJECT
+public:
+    TuningPanel(MainWindow& window, QWidget* parent = nullptr);
+
+    TuningRunner& runner() { return *m_runner; }
+    ScopeView* view() const { return m_view; }
+    QTableWidget* runsTable() const { return m_runsTable; }
+    GainEditor* gainEditor(const QString& name) const { return m_editors.value(name); }
+    QString statusText() const;
+    // Shows the preset in the test-move fields and hands it to the runner.
+    void setTestMove(const TestMove& move);
+    void saveGainsAs();
+
+private:
+    QWidget* buildGains();
+    QWidget* buildTestMove();
+    QWidget* buildTune();
+    void applyTestMove();
+    void addRun(const TuningRun& run);
+    void updateButtons();
+    void setStatus(const QString& text);
+
+    MainWindow& m_window;
+    TuningRunner* m_runner;
+    QMap<QString, GainEditor*> m_editors;
+    ScopeView* m_view;
+    QTableWidget* m_runsTable;
+    QComboBox* m_moveKind = nullptr;
+    QSpinBox* m_amplitude = nullptr;
+    QSpinBox* m_duration = nullptr;
+    QComboBox* m_bandwidth = nullptr;
+    QComboBox* m_stability = nullptr;
+    QPushButton* m_runOnce = nullptr;
+    QPushButton* m_runLoop = nullptr;
+    QPushButton* m_stop = nullptr;
+    QPushButton* m_undo = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QLabel* m_status = nullptr;
+    QLabel* m_warning = nullptr;
+};
+
+} // namespace app

@@ -1,0 +1,218 @@
+// TuningRunner: gains, runs and TUNE over the session.
+#include "tuning_runner.h"
+
+#include "drive_connection.h"
+#include "scope_catalog.h"
+
+#include "scope/play_parser.h"
+#include "serialport/bds5_variable_file.h"
+
+#include <QTimer>
+
+namespace app {
+
+namespace {
+const QStringList kNumericGains = {QStringLiteral("KP"),  QStringLiteral("KF"),    QStringLiteral("KV"),
+                                   QStringLiteral("KVI"), QStringLiteral("KPROP"), QStringLiteral("LPFHZ"),
+                                   QStringLiteral("ILIM")};
+const QStringList kSwitches = {QStringLiteral("LPF"), QStringLiteral("PL"), QStringLiteral("PROP"),
+                               QStringLiteral("PLIM")};
+constexpr double kSaturation = 0.98; // of ILIM
+constexpr int kBitsPerByte = 10;     // 8N1
+
+std::optional<int> valueOf(const QString& word) {
+    if (word.compare(QLatin1String("ON"), Qt::CaseInsensitive) == 0) return 1;
+    if (word.compare(QLatin1String("OFF"), Qt::CaseInsensitive) == 0) return 0;
+    bool ok = false;
+    const double v = word.toDouble(&ok);
+    return ok ? std::optional<int>(int(std::lround(v))) : std::nullopt;
+}
+} // namespace
+
+TuningRunner::TuningRunner(DriveConnection& connection, QObject* parent) : QObject(parent), m_connection(connection) {
+    qRegisterMetaType<TuningRun>();
+}
+
+quint64 TuningRunner::send(const QString& line) {
+    serialport::Bds5Session* session = m_connection.session();
+    if (!session || !m_connection.isConnected()) {
+        emit message(tr("Not connected to a drive: use Drive > Connect."));
+        return 0;
+    }
+    connect(session, &serialport::Bds5Session::finished, this, &TuningRunner::onAnswer, Qt::UniqueConnection);
+    return session->send(line);
+}
+
+void TuningRunner::setGain(const QString& name, int value) {
+    const QString line = QStringLiteral("%1=%2").arg(name).arg(value);
+    if (const quint64 id = send(line)) {
+        m_pendingGains.insert(id, name);
+        m_gains[name] = value; // in force for every command queued after it
+    }
+}
+
+void TuningRunner::readGains() {
+    m_readId = send(QStringLiteral("P ") + kNumericGains.join(QLatin1Char(' ')));
+    m_readSwitchesId = send(QStringLiteral("P ") + kSwitches.join(QLatin1Char(' ')));
+}
+
+void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response) {
+    if (m_pendingGains.contains(id)) {
+        const QString name = m_pendingGains.take(id);
+        if (response.errors.isEmpty()) return emit gainConfirmed(name, m_gains.value(name));
+        const QString why = serialport::describeError(response.errors.first());
+        emit gainRefused(name, why);
+        readGains(); // the drive's value is the truth
+        return;
+    }
+    if (id == m_readId || id == m_readSwitchesId) {
+        const QStringList& names = id == m_readId ? kNumericGains : kSwitches;
+        const QStringList words = response.lines.join(QLatin1Char(' ')).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        for (int i = 0; i < std::min(words.size(), names.size()); ++i)
+            if (const auto v = valueOf(words[i])) m_gains[names[i]] = *v;
+        if (id == m_readSwitchesId) {
+            emit gainsRead(m_gains);
+            if (m_runAfterRead) {
+                m_runAfterRead = false;
+                if (m_running)
+                    startRun(); // a run was waiting for the gains
+                else
+                    runOnce(); // TUNE: show the step with the gains it chose
+            }
+        }
+        return;
+    }
+    if (id == m_tuneId) {
+        m_tuneId = 0;
+        if (!response.errors.isEmpty()) {
+            emit message(tr("TUNE failed: %1").arg(serialport::describeError(response.errors.first())));
+            return;
+        }
+        emit message(tr("TUNE done: reading the gains it chose, then a step to show the response."));
+        m_runAfterRead = true;
+        readGains();
+    }
+}
+
+void TuningRunner::runOnce() {
+    if (m_running) return;
+    m_running = true;
+    m_continuous = false;
+    emit stateChanged();
+    startRun();
+}
+
+void TuningRunner::runContinuously() {
+    m_continuous = true;
+    if (!m_running) {
+        m_running = true;
+        startRun();
+    }
+    emit stateChanged();
+}
+
+void TuningRunner::stop() {
+    m_continuous = false;
+    if (m_record) m_record->cancel();
+    emit stateChanged();
+}
+
+void TuningRunner::startRun() {
+    serialport::Bds5Session* session = m_connection.session();
+    if (!session || !m_connection.isConnected()) {
+        m_running = m_continuous = false;
+        emit runFailed(tr("Not connected to a drive: use Drive > Connect."));
+        return emit stateChanged();
+    }
+    if (m_gains.isEmpty()) { // the run's gains must be known: read them first, then run
+        m_runAfterRead = true;
+        m_cycle.start();
+        return readGains();
+    }
+    if (!m_runAfterRead && !m_cycle.isValid()) m_cycle.start();
+    m_runGains = m_gains; // every assignment queued so far reaches the drive before RECORD
+    m_record = new serialport::Bds5RecordPlay(*session, m_move.plan(), this);
+    connect(m_record, &serialport::Bds5Transfer::progress, this, &TuningRunner::progress);
+    connect(m_record, &serialport::Bds5Transfer::finished, this, &TuningRunner::onRecorded);
+    emit runStarted(int(m_runs.size()) + 1);
+    m_record->start();
+}
+
+void TuningRunner::onRecorded(const serialport::Bds5TransferResult& result) {
+    const serialport::Bds5RecordPlan plan = m_record ? m_record->plan() : m_move.plan();
+    const QMap<QString, int> gains = m_runGains;
+    if (m_record) m_record->deleteLater();
+    auto fail = [this](const QString& why) {
+        m_cycle.invalidate();
+        m_running = m_continuous = false;
+        emit runFailed(why);
+        emit stateChanged();
+    };
+    if (!result.ok()) return fail(result.summary);
+    std::vector<std::string> lines;
+    qint64 bytes = 6; // "PLAY" CR LF echoed
+    for (const QString& l : result.lines) {
+        lines.push_back(l.toStdString());
+        bytes += l.size() + 2;
+    }
+    const auto parsed = scope::parsePlay(lines, unitOf);
+    if (!parsed.capture || parsed.capture->channels.size() < 2)
+        return fail(tr("PLAY could not be read: %1").arg(QString::fromStdString(parsed.error)));
+    TuningRun run;
+    run.number = int(m_runs.size()) + 1;
+    run.gains = gains;
+    run.capture = *parsed.capture;
+    const QString changed = m_runs.isEmpty() ? QString() : [&] {
+        QStringList diffs;
+        for (auto it = gains.begin(); it != gains.end(); ++it)
+            if (m_runs.last().gains.value(it.key()) != it.value())
+                diffs << QStringLiteral("%1=%2").arg(it.key()).arg(it.value());
+        return diffs.join(QLatin1Char(' '));
+    }();
+    run.capture.title = tr("Run %1%2")
+                            .arg(run.number)
+                            .arg(changed.isEmpty() ? QString() : QStringLiteral(": ") + changed)
+                            .toStdString();
+    const auto& c = run.capture.channels;
+    run.metrics = scope::analyseStep(c[1].values, run.capture.interval_s, c[0].values);
+    if (const scope::CaptureChannel* icmd = run.capture.find("ICMD"); icmd && !icmd->values.empty()) {
+        double peak = 0;
+        for (const double v : icmd->values) peak = std::max(peak, std::abs(v));
+        run.currentSaturated = peak >= kSaturation * gains.value(QStringLiteral("ILIM"), 100);
+    }
+    const int baud = m_connection.session() ? std::max(1, m_connection.session()->link().baudRate()) : 9600;
+    run.cycle_s = double(m_cycle.nsecsElapsed()) / 1e9;
+    m_cycle.invalidate();
+    run.ideal_s = plan.durationMs() / 1000.0 + double(bytes) * kBitsPerByte / baud;
+    m_runs.append(run);
+    emit runFinished(run);
+    if (m_continuous)
+        QTimer::singleShot(0, this, &TuningRunner::startRun);
+    else {
+        m_running = false;
+        emit stateChanged();
+    }
+}
+
+void TuningRunner::undoTo(int runNumber) {
+    if (runNumber < 1 || runNumber > m_runs.size()) return;
+    const QMap<QString, int> target = m_runs[runNumber - 1].gains;
+    for (auto it = target.begin(); it != target.end(); ++it)
+        if (m_gains.value(it.key()) != it.value()) setGain(it.key(), it.value());
+    emit message(tr("Gains set back to those of run %1.").arg(runNumber));
+}
+
+void TuningRunner::tune(int bandwidthHz, int stability) {
+    m_tuneId = send(QStringLiteral("TUNE %1 %2").arg(bandwidthHz).arg(stability));
+    if (m_tuneId) emit message(tr("TUNE %1 %2: the drive shakes the motor...").arg(bandwidthHz).arg(stability));
+}
+
+QString TuningRunner::gainsAsVar() const {
+    QString text;
+    for (auto it = m_gains.begin(); it != m_gains.end(); ++it)
+        text += QStringLiteral("%1 %2\n").arg(it.key()).arg(it.value());
+    return serialport::Bds5VariableFile::parse(text).toText(
+        {tr("Tuning gains saved by ServoDesk's tuning panel."), tr("Variables > Send to Drive sends them back.")});
+}
+
+} // namespace app

@@ -1,0 +1,93 @@
+// TuningRunner: the tuning panel's work on the drive, through the session only — gain assignments confirmed
+// by the prompt, reading the gains back (P), test runs (RECORD + test move + PLAY, parsed and measured),
+// "Run continuously" (repeat until stopped), undo to an earlier run's gains, and TUNE <bandwidth>
+// <stability>. Each run times itself against its ideal: test move + record + PLAY transfer time.
+// GUI thread; never blocks.
+#pragma once
+
+#include "test_move.h"
+
+#include "scope/capture.h"
+#include "scope/signal_analysis.h"
+#include "serialport/bds5_record_play.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QMap>
+#include <QObject>
+#include <QPointer>
+
+namespace app {
+
+class DriveConnection;
+
+struct TuningRun {
+    int number = 0;           // 1, 2, ...
+    QMap<QString, int> gains; // the gains in force during the run
+    scope::Capture capture;
+    scope::StepMetrics metrics;    // of the feedback against the command
+    bool currentSaturated = false; // ICMD reached ILIM: the step says little about the loop
+    double cycle_s = 0;            // wall time of the whole cycle
+    double ideal_s = 0;            // record time + PLAY bytes on the wire
+};
+
+class TuningRunner final : public QObject {
+    Q_OBJECT
+public:
+    explicit TuningRunner(DriveConnection& connection, QObject* parent = nullptr);
+
+    // Sends "NAME=value"; gainConfirmed() or gainRefused() follows when the drive's prompt returns.
+    void setGain(const QString& name, int value);
+    void readGains(); // P of every tuning gain; gainsRead() follows
+    const QMap<QString, int>& gains() const { return m_gains; }
+
+    void setTestMove(const TestMove& move) { m_move = move; }
+    const TestMove& testMove() const { return m_move; }
+    void runOnce();
+    void runContinuously();
+    void stop(); // after the run in progress; cancels its recording
+    bool isRunning() const { return m_running; }
+    bool isContinuous() const { return m_continuous; }
+
+    const QList<TuningRun>& runs() const { return m_runs; }
+    void undoTo(int runNumber); // sends that run's gains where they differ
+    void tune(int bandwidthHz, int stability);
+    // The gains as a .VAR file ("NAME value" lines, header comment).
+    QString gainsAsVar() const;
+
+signals:
+    void gainConfirmed(const QString& name, int value);
+    void gainRefused(const QString& name, const QString& why);
+    void gainsRead(const QMap<QString, int>& gains);
+    void runStarted(int number);
+    void progress(int done, int total);
+    void runFinished(const app::TuningRun& run);
+    void runFailed(const QString& why);
+    void stateChanged(); // running / continuous / idle
+    void message(const QString& text);
+
+private:
+    void startRun();
+    void onRecorded(const serialport::Bds5TransferResult& result);
+    void onAnswer(quint64 id, const serialport::Bds5Response& response);
+    quint64 send(const QString& line);
+
+    DriveConnection& m_connection;
+    TestMove m_move;
+    QMap<QString, int> m_gains;             // as last read or sent: in force for every command queued after it
+    QMap<QString, int> m_runGains;          // in force during the run in progress
+    QHash<quint64, QString> m_pendingGains; // id -> "KV=2400"
+    quint64 m_readId = 0;
+    quint64 m_readSwitchesId = 0;
+    quint64 m_tuneId = 0;
+    QPointer<serialport::Bds5RecordPlay> m_record;
+    QList<TuningRun> m_runs;
+    QElapsedTimer m_cycle;
+    bool m_running = false;
+    bool m_continuous = false;
+    bool m_runAfterRead = false;
+};
+
+} // namespace app
+
+Q_DECLARE_METATYPE(app::TuningRun)

@@ -1,0 +1,109 @@
+// Scope tour steps: real RECORD/PLAY against the simulated drive at 9600 baud, grabbed as a user sees them.
+#include "scope_tour_steps.h"
+
+#include "drive_connection.h"
+#include "main_window.h"
+#include "scope/gain_editor.h"
+#include "scope/scope_controller.h"
+#include "scope/scope_view.h"
+#include "scope/tuning_panel.h"
+#include "transfer_dialog.h"
+
+#include "scope/scope_plot.h"
+
+#include <QDialog>
+#include <QDockWidget>
+#include <QPointer>
+#include <QSpinBox>
+#include <QStatusBar>
+
+namespace app {
+
+namespace {
+
+serialport::Bds5RecordPlan tourStep() {
+    serialport::Bds5RecordPlan plan;
+    plan.samples = 200;
+    plan.intervalMs = 1;
+    plan.variables = {QStringLiteral("VCMD"), QStringLiteral("VFB")};
+    plan.commands = {{0, QStringLiteral("J 1000")}, {110, QStringLiteral("J 0")}};
+    plan.onCancel = QStringLiteral("J 0");
+    return plan;
+}
+
+// One tuning run with KV set first (0: leave the gains).
+ScreenshotTour::Step tuningRun(MainWindow& window, const QString& name, int runs, int kv) {
+    TuningPanel* panel = window.scopeController().tuningPanel();
+    ScreenshotTour::Step step;
+    step.name = name;
+    step.act = [panel, kv] {
+        if (kv > 0) panel->gainEditor(QStringLiteral("KV"))->spinBox()->setValue(kv);
+        panel->runner().runOnce();
+    };
+    step.ready = [panel, runs] { return panel->runner().runs().size() >= runs && !panel->runner().isRunning(); };
+    return step;
+}
+
+} // namespace
+
+std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
+    ScopeController& scope = window.scopeController();
+    std::vector<ScreenshotTour::Step> steps;
+    steps.push_back({.name = QStringLiteral("scope-step-response"),
+                     .act =
+                         [&window, &scope] {
+                             // As the manual's remedy for ERR 23 says: the factory PMAX/PMIN (+-100 counts)
+                             // would stop a jog at once.
+                             window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0);
+                             window.connection().sendCommand(QStringLiteral("EN"));
+                             scope.record(tourStep());
+                         },
+                     .ready =
+                         [&scope] {
+                             if (!scope.lastCapture() || TransferDialog::active()) return false;
+                             scope.view()->plot()->setCursors(0.020, 0.070);
+                             return true;
+                         },
+                     .grab =
+                         [&window, &scope] {
+                             window.resizeDocks({scope.scopeDock()}, {470}, Qt::Vertical);
+                             return window.grab();
+                         },
+                     .text = [&scope] { return QString::fromStdString(scope.view()->plot()->readout().text()); }});
+    auto data = std::make_shared<QPointer<QDialog>>();
+    steps.push_back({.name = QStringLiteral("scope-data"),
+                     .act = [&scope, data] { *data = scope.viewData(); },
+                     .ready = [data] { return *data && (*data)->isVisible(); },
+                     .grab = [data] { return (*data)->grab(); },
+                     .cleanUp =
+                         [data] {
+                             if (*data) (*data)->close();
+                         }});
+    // The tuning panel floats at the tour's window size so its plot, gains and runs table all show.
+    TuningPanel* panel = scope.tuningPanel();
+    ScreenshotTour::Step first = tuningRun(window, QStringLiteral("tuning-run-1"), 1, 0);
+    const auto runFirst = first.act;
+    first.act = [&scope, panel, runFirst] {
+        QDockWidget* dock = scope.tuningDock();
+        dock->setFloating(true);
+        dock->resize(ScreenshotTour::kWindowSize);
+        dock->show();
+        TestMove move;
+        move.durationMs = 80;
+        panel->setTestMove(move);
+        runFirst();
+    };
+    steps.push_back(first);
+    steps.push_back(tuningRun(window, QStringLiteral("tuning-run-2"), 2, 3000));
+    ScreenshotTour::Step third = tuningRun(window, QStringLiteral("tuning-panel"), 3, 1200);
+    third.grab = [&scope] { return scope.tuningDock()->grab(); };
+    third.text = [panel] { return panel->statusText(); };
+    third.cleanUp = [&window, &scope] {
+        scope.tuningDock()->hide();
+        window.connection().sendCommand(QStringLiteral("DIS"));
+    };
+    steps.push_back(third);
+    return steps;
+}
+
+} // namespace app

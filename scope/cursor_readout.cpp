@@ -1,0 +1,56 @@
+// Cursor readout: interpolation and text.
+#include "cursor_readout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace scope {
+
+namespace {
+std::string number(double value, int decimals) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
+// Values keep the drive's resolution: integers as integers, otherwise 3 significant decimals.
+std::string value(double v) {
+    return number(v, std::abs(v - std::round(v)) < 1e-9 ? 0 : 3);
+}
+} // namespace
+
+double valueAt(const Capture& capture, std::size_t channel, double t_s) {
+    const auto& v = capture.channels.at(channel).values;
+    if (v.empty()) return 0;
+    const double position = std::clamp(t_s / capture.interval_s, 0.0, double(v.size() - 1));
+    const auto i = std::size_t(position);
+    if (i + 1 >= v.size()) return v.back();
+    const double f = position - double(i);
+    return v[i] + f * (v[i + 1] - v[i]);
+}
+
+CursorReadout readCursors(const Capture& capture, double first_s, double second_s) {
+    CursorReadout r;
+    r.first_s = first_s;
+    r.second_s = second_s;
+    r.delta_s = second_s - first_s;
+    for (std::size_t c = 0; c < capture.channels.size(); ++c) {
+        const double a = valueAt(capture, c, first_s);
+        const double b = valueAt(capture, c, second_s);
+        r.rows.push_back({capture.channels[c].name, capture.channels[c].unit, a, b, b - a});
+    }
+    return r;
+}
+
+std::string CursorReadout::text() const {
+    std::string out = "t1 " + number(first_s * 1000, 1) + " ms   t2 " + number(second_s * 1000, 1) + " ms   \u0394t " +
+                      number(delta_s * 1000, 1) + " ms";
+    for (const Row& row : rows) {
+        out += "     " + row.name + " " + value(row.atFirst) + " \u2192 " + value(row.atSecond) + "  \u0394 " +
+               value(row.delta) + (row.unit.empty() ? "" : " " + row.unit);
+    }
+    return out;
+}
+
+} // namespace scope

@@ -1,0 +1,163 @@
+// Bds5RecordPlay: RECORD, timed commands, wait, PLAY.
+#include "bds5_record_play.h"
+
+namespace serialport {
+
+namespace {
+constexpr int kTickMs = 20;
+constexpr int kNothingRecorded = 65; // ERR 65 RECORD NOT READY
+constexpr int kNotRecordable = 89;   // ERR 89 NOT FOR ALARM/HOLD/RECORD
+constexpr int kTooManyPoints = 90;   // ERR 90 TOO MANY POINTS
+constexpr int kRecordPoints = 1000;  // n x variables (L7425)
+} // namespace
+
+QString Bds5RecordPlan::recordLine() const {
+    return QStringLiteral("RECORD %1 %2 %3").arg(samples).arg(intervalMs).arg(variables.join(QLatin1Char(' ')));
+}
+
+Bds5RecordPlay::Bds5RecordPlay(Bds5Session& session, Bds5RecordPlan plan, QObject* parent)
+    : Bds5Transfer(session, parent), m_plan(std::move(plan)) {
+    m_tick.setInterval(kTickMs);
+    connect(&m_tick, &QTimer::timeout, this, &Bds5RecordPlay::tick);
+}
+
+QString Bds5RecordPlay::variablesText() const {
+    return m_plan.variables.join(QStringLiteral(", "));
+}
+
+void Bds5RecordPlay::cancel() {
+    Bds5Transfer::cancel();
+    if (!isRunning()) return;
+    if (m_stage == Stage::Play && session())
+        session()->sendUrgent("\x1b"); // Esc stops the listing
+    else if (m_stage == Stage::Commands && !m_commandInFlight)
+        finishCancelled();
+}
+
+void Bds5RecordPlay::begin() {
+    m_stage = Stage::Record;
+    m_nextCommand = 0;
+    m_commandInFlight = false;
+    m_result = {};
+    if (!sessionAtInteractivePrompt()) {
+        m_result.status = Bds5TransferResult::Status::Refused;
+        m_result.summary = tr("The drive is not at its --> prompt (mode: %1): nothing was recorded. RECORD and "
+                              "PLAY work at the interactive prompt.")
+                               .arg(session() ? modeName(session()->mode()) : tr("not connected"));
+        return finish(m_result);
+    }
+    emit stageChanged(tr("Setting up the recording (%1)").arg(m_plan.recordLine()));
+    send(m_plan.recordLine());
+}
+
+void Bds5RecordPlay::answered(const Bds5Response& response) {
+    switch (m_stage) {
+    case Stage::Record: {
+        if (!response.errors.isEmpty()) {
+            const Bds5ErrorLine& e = response.errors.first();
+            m_result.errors.append({0, 0, m_plan.recordLine(), e});
+            m_result.status = Bds5TransferResult::Status::Refused;
+            QString why;
+            if (e.code == kNotRecordable)
+                why = tr("%1 cannot be recorded (PE, REMOTE, TMR1-4, VAVG, VXAVG and user switches cannot).")
+                          .arg(e.entry.isEmpty() ? variablesText() : e.entry);
+            else if (e.code == kTooManyPoints)
+                why = tr("%1 samples of %n variable(s) is more than the drive's %2 points.", nullptr,
+                         int(m_plan.variables.size()))
+                          .arg(m_plan.samples)
+                          .arg(kRecordPoints);
+            else
+                why = tr("The drive refused it.");
+            m_result.summary = tr("%1 — %2 Nothing was recorded.").arg(describeError(e), why);
+            return finish(m_result);
+        }
+        if (isCancelling()) return finishCancelled();
+        m_since.start();
+        m_stage = Stage::Commands;
+        emit stageChanged(tr("Recording %1 every %2 ms").arg(variablesText()).arg(m_plan.intervalMs));
+        m_tick.start();
+        return tick();
+    }
+    case Stage::Commands: {
+        m_commandInFlight = false;
+        const QString sent = m_plan.commands.value(m_nextCommand - 1).line;
+        for (const Bds5ErrorLine& e : response.errors) m_result.errors.append({0, 0, sent, e});
+        if (isCancelling()) return finishCancelled();
+        return tick();
+    }
+    case Stage::Play: {
+        if (isCancelling()) {
+            m_result.status = Bds5TransferResult::Status::Cancelled;
+            m_result.summary = tr("Reading the recording was cancelled; it stays on the drive (PLAY again "
+                                  "to read it).");
+            return finish(m_result);
+        }
+        if (!response.errors.isEmpty()) {
+            const Bds5ErrorLine& e = response.errors.first();
+            m_result.errors.append({0, 0, QStringLiteral("PLAY"), e});
+            m_result.status = Bds5TransferResult::Status::Failed;
+            m_result.summary = e.code == kNothingRecorded
+                                   ? tr("%1 — the drive holds no recording.").arg(describeError(e))
+                                   : tr("The drive answered PLAY with %1.").arg(describeError(e));
+            return finish(m_result);
+        }
+        m_stage = Stage::Done;
+        m_result.lines = response.lines;
+        m_result.linesDone = int(response.lines.size());
+        m_result.summary =
+            tr("Recorded %1 every %2 ms: %n sample(s).", nullptr, std::max(0, int(response.lines.size()) - 1))
+                .arg(variablesText())
+                .arg(m_plan.intervalMs);
+        if (!m_result.errors.isEmpty())
+            m_result.summary += tr(" The drive refused \"%1\": %2.")
+                                    .arg(m_result.errors.first().sent, describeError(m_result.errors.first().error));
+        return finish(m_result);
+    }
+    case Stage::Done: break;
+    }
+}
+
+// Sends the next command when its time has come; PLAY once every command went out and the time is up.
+void Bds5RecordPlay::tick() {
+    if (m_stage != Stage::Commands || m_commandInFlight) return;
+    const qint64 elapsed = m_since.elapsed();
+    const int total = m_plan.durationMs() + m_plan.marginMs;
+    emit progress(int(std::min<qint64>(elapsed, total)), total);
+    if (m_nextCommand < m_plan.commands.size()) {
+        const Bds5RecordPlan::TimedCommand& c = m_plan.commands[m_nextCommand];
+        if (elapsed < c.atMs) return;
+        ++m_nextCommand;
+        m_commandInFlight = true;
+        return send(c.line);
+    }
+    if (elapsed >= total) sendPlay();
+}
+
+void Bds5RecordPlay::sendPlay() {
+    m_tick.stop();
+    m_stage = Stage::Play;
+    emit stageChanged(tr("Reading %n sample(s) (PLAY)", nullptr, m_plan.samples));
+    send(QStringLiteral("PLAY"));
+    countLinesInto(0, m_plan.samples + 1);
+}
+
+void Bds5RecordPlay::finishCancelled() {
+    m_tick.stop();
+    const bool motionLeft = m_nextCommand > 0 && m_nextCommand < m_plan.commands.size();
+    if (motionLeft && !m_plan.onCancel.isEmpty() && session()) session()->send(m_plan.onCancel);
+    m_result.status = Bds5TransferResult::Status::Cancelled;
+    m_result.summary =
+        motionLeft && !m_plan.onCancel.isEmpty()
+            ? tr("The recording was cancelled; \"%1\" was sent to end the test move.").arg(m_plan.onCancel)
+            : tr("The recording was cancelled; nothing was read from the drive.");
+    finish(m_result);
+}
+
+void Bds5RecordPlay::lost(const QString& reason) {
+    m_tick.stop();
+    m_result.status = Bds5TransferResult::Status::Failed;
+    m_result.summary = tr("The recording failed: %1.").arg(reason);
+    finish(m_result);
+}
+
+} // namespace serialport

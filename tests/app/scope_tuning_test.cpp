@@ -1,0 +1,273 @@
+// Scope and tuning panel against the simulated BDS5, asserting what a user sees: a velocity step recorded
+// with RECORD/PLAY is plotted (every sample in the graphs, a plot that is not blank), its measurements
+// match figures computed here independently from the same samples, .CSV and View Data hold the same
+// samples, the drive's ERR 90 reaches the status bar, and the tuning loop sends KV, records again and
+// keeps the previous run as an overlay. TUNE is checked against the bandwidth it was asked for.
+#include "app/drive/drive_connection.h"
+#include "app/main_window.h"
+#include "app/scope/gain_editor.h"
+#include "app/scope/measurements_table.h"
+#include "app/scope/scope_controller.h"
+#include "app/scope/scope_view.h"
+#include "app/scope/tuning_panel.h"
+
+#include "scope/scope_plot.h"
+
+#include <qcustomplot.h>
+
+#include <QDialog>
+#include <QSet>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableView>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using app::MainWindow;
+
+namespace {
+constexpr int kDriveTimeoutMs = 30000;
+
+bool driveReady(const MainWindow& window) {
+    const auto* session = window.connection().session();
+    return session && session->state() == serialport::Bds5Session::State::Ready &&
+           session->mode() == serialport::Bds5Mode::Interactive;
+}
+
+serialport::Bds5RecordPlan velocityStep() {
+    serialport::Bds5RecordPlan plan;
+    plan.samples = 160;
+    plan.intervalMs = 1;
+    plan.variables = {QStringLiteral("VCMD"), QStringLiteral("VFB")};
+    plan.commands = {{0, QStringLiteral("J 1000")}, {100, QStringLiteral("J 0")}};
+    return plan;
+}
+
+// Independent step figures: the plateau of the command, the mean of its last tenth, 10/90 % crossings.
+struct Expected {
+    double rise_ms = -1;
+    double overshoot_pct = 0;
+};
+Expected expectedStep(const std::vector<double>& cmd, const std::vector<double>& y, double dt) {
+    Expected e;
+    std::size_t start = 0;
+    while (start < cmd.size() && cmd[start] == cmd[0]) ++start;
+    if (start == cmd.size()) return e;
+    std::size_t end = cmd.size();
+    for (std::size_t i = start + 1; i < cmd.size(); ++i)
+        if (std::abs(cmd[i] - cmd[0]) < std::abs(cmd[i - 1] - cmd[0])) {
+            end = i;
+            break;
+        }
+    start -= 1;
+    const std::size_t tail = std::max<std::size_t>(1, (end - start) / 10);
+    double final = 0;
+    for (std::size_t i = end - tail; i < end; ++i) final += y[i] / double(tail);
+    const double step = final - y[0];
+    auto cross = [&](double fraction) {
+        const double level = y[0] + fraction * step;
+        for (std::size_t i = std::max<std::size_t>(start, 1); i < end; ++i)
+            if ((y[i] - level) * step >= 0 && (y[i - 1] - level) * step < 0)
+                return (double(i - 1) + (level - y[i - 1]) / (y[i] - y[i - 1])) * dt;
+        return -1.0;
+    };
+    e.rise_ms = (cross(0.9) - cross(0.1)) * 1000;
+    double peak = final;
+    for (std::size_t i = start; i < end; ++i) peak = step > 0 ? std::max(peak, y[i]) : std::min(peak, y[i]);
+    e.overshoot_pct = 100 * std::abs(peak - final) / std::abs(step);
+    return e;
+}
+
+// A rendered plot shows the channel colours, not just the background.
+int distinctColours(const QImage& image) {
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2) colours.insert(image.pixel(x, y));
+    return int(colours.size());
+}
+
+struct Window {
+    MainWindow window;
+    Window() {
+        window.connectDrive(app::ConnectionChoice::simulator()); // 9600 baud, as the drive's own UART
+        window.show();
+    }
+    bool enabled() {
+        if (!QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs)) return false;
+        // The factory PMAX/PMIN (+-100 counts) stop a jog at once (ERR 23): PLIM off, from the tuning panel.
+        window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0);
+        window.connection().sendCommand(QStringLiteral("EN"));
+        return QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs);
+    }
+};
+} // namespace
+
+class ScopeTuningTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskScopeTest"));
+    }
+
+    void velocityStepIsRecordedPlottedAndMeasured() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::ScopeController& scope = w.window.scopeController();
+        QSignalSpy shown(&scope, &app::ScopeController::captureShown);
+        scope.record(velocityStep());
+        QVERIFY(shown.wait(kDriveTimeoutMs));
+        const scope::Capture capture = *scope.lastCapture();
+        QCOMPARE(capture.sampleCount(), std::size_t(160));
+        QCOMPARE(capture.channels[1].unit, std::string("VEL"));
+
+        scope::ScopePlot* plot = scope.view()->plot();
+        QVERIFY(scope.scopeDock()->isVisible());
+        QCOMPARE(plot->pointCount(0), 160);
+        QCOMPARE(plot->pointCount(1), 160);
+        QCOMPARE(plot->customPlot()->yAxis->label(), QStringLiteral("VCMD [VEL]"));
+        QCOMPARE(plot->customPlot()->yAxis2->label(), QStringLiteral("VFB [VEL]"));
+        QVERIFY(QTest::qWaitForWindowExposed(plot));
+        plot->customPlot()->replot(QCustomPlot::rpImmediateRefresh);
+        const QImage image = plot->grab().toImage();
+        QVERIFY2(distinctColours(image) > 20, "the plot is blank");
+
+        const Expected e = expectedStep(capture.channels[0].values, capture.channels[1].values, capture.interval_s);
+        QVERIFY(e.rise_ms > 0);
+        app::MeasurementsTable* table = scope.view()->measurements();
+        QCOMPARE(table->cell(QStringLiteral("VFB"), QStringLiteral("Rise (ms)")), QString::number(e.rise_ms, 'f', 1));
+        QCOMPARE(table->cell(QStringLiteral("VFB"), QStringLiteral("Overshoot %")),
+                 QString::number(e.overshoot_pct, 'f', 1));
+        QCOMPARE(table->cell(QStringLiteral("VCMD"), QStringLiteral("Max")), QStringLiteral("1000"));
+
+        // Cursors read the samples: at 120 ms the jog has ended (J 0 at 100 ms is well before).
+        plot->setCursors(0.0, 0.050);
+        QCOMPARE(plot->readout().rows[0].atFirst, capture.channels[0].values[0]);
+        QCOMPARE(plot->readout().rows[0].atSecond, capture.channels[0].values[50]);
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("step.csv"));
+        QVERIFY(scope.saveCsv(path));
+        QVERIFY(scope.loadCsv(path));
+        QCOMPARE(scope.lastCapture()->channels[1].values, capture.channels[1].values);
+        QCOMPARE(plot->overlayCount(), 1); // the recording stays as an overlay under the file's copy
+        QDialog* data = scope.viewData();
+        QVERIFY(data);
+        auto* view = data->findChild<QTableView*>();
+        QCOMPARE(view->model()->rowCount(), 160);
+        QCOMPARE(view->model()->headerData(2, Qt::Horizontal).toString(), QStringLiteral("VFB (VEL)"));
+        data->close();
+    }
+
+    void tooManyPointsShowsTheDrivesError() {
+        Window w;
+        QVERIFY(w.enabled());
+        serialport::Bds5RecordPlan plan = velocityStep();
+        plan.samples = 300;
+        plan.variables << QStringLiteral("ICMD") << QStringLiteral("PFB");
+        QSignalSpy finished(&w.window.scopeController(), &app::ScopeController::recordFinished);
+        w.window.scopeController().record(plan);
+        QVERIFY(finished.wait(kDriveTimeoutMs));
+        QVERIFY2(w.window.statusBar()->currentMessage().contains(QStringLiteral("ERR 90")),
+                 qPrintable(w.window.statusBar()->currentMessage()));
+        QVERIFY(!w.window.scopeController().lastCapture());
+    }
+
+    void tuningLoopSendsKvAndOverlaysTheNextRun() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::TuningPanel* panel = w.window.scopeController().tuningPanel();
+        app::TestMove move;
+        move.durationMs = 50;
+        panel->setTestMove(move);
+        app::TuningRunner& runner = panel->runner();
+        QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
+        runner.runOnce();
+        QVERIFY(runs.wait(kDriveTimeoutMs));
+
+        QSignalSpy confirmed(&runner, &app::TuningRunner::gainConfirmed);
+        panel->gainEditor(QStringLiteral("KV"))->spinBox()->setValue(3000);
+        QVERIFY(confirmed.wait(kDriveTimeoutMs));
+        QCOMPARE(confirmed.first().at(0).toString(), QStringLiteral("KV"));
+        runner.runOnce();
+        QVERIFY(runs.wait(kDriveTimeoutMs));
+
+        QCOMPARE(runner.runs().size(), 2);
+        QCOMPARE(runner.runs()[1].gains.value(QStringLiteral("KV")), 3000);
+        QCOMPARE(panel->view()->plot()->overlayCount(), 1);
+        QCOMPARE(panel->view()->plot()->overlayTitle(0), QStringLiteral("Run 1"));
+        QCOMPARE(panel->runsTable()->rowCount(), 2);
+        QCOMPARE(panel->runsTable()->item(1, 1)->text(), QStringLiteral("KV=3000"));
+        const scope::Capture& second = runner.runs()[1].capture;
+        const Expected e = expectedStep(second.channels[0].values, second.channels[1].values, second.interval_s);
+        QCOMPARE(panel->runsTable()->item(1, 3)->text(), QString::number(e.rise_ms, 'f', 1));
+
+        // The drive holds the new KV (read back with P), and undo sends run 1's value again.
+        QSignalSpy read(&runner, &app::TuningRunner::gainsRead);
+        runner.readGains();
+        QVERIFY(read.wait(kDriveTimeoutMs));
+        QCOMPARE(runner.gains().value(QStringLiteral("KV")), 3000);
+        runner.undoTo(1);
+        runner.readGains();
+        QVERIFY(read.wait(kDriveTimeoutMs));
+        QCOMPARE(runner.gains().value(QStringLiteral("KV")), runner.runs()[0].gains.value(QStringLiteral("KV")));
+        QVERIFY(runner.gainsAsVar().contains(QStringLiteral("KV %1").arg(runner.runs()[0].gains.value("KV"))));
+    }
+
+    void runContinuouslyRepeatsUntilStopped() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::TuningPanel* panel = w.window.scopeController().tuningPanel();
+        app::TestMove move;
+        move.durationMs = 30;
+        panel->setTestMove(move);
+        app::TuningRunner& runner = panel->runner();
+        runner.runContinuously();
+        QTRY_VERIFY_WITH_TIMEOUT(runner.runs().size() >= 3, 3 * kDriveTimeoutMs);
+        runner.stop();
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isRunning(), kDriveTimeoutMs);
+        QVERIFY(panel->view()->plot()->overlayCount() >= 2);
+        for (const app::TuningRun& run : runner.runs())
+            qInfo("run %d: cycle %.2f s, ideal %.2f s, ratio %.2f", run.number, run.cycle_s, run.ideal_s,
+                  run.cycle_s / run.ideal_s);
+    }
+
+    void tune30Hz2GivesAStepOfAbout30Hz() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::TuningRunner& runner = w.window.scopeController().tuningPanel()->runner();
+        app::TestMove move;
+        move.amplitude = 100; // ACC ramps it in 1 ms: a step for the loop
+        move.durationMs = 100;
+        w.window.scopeController().tuningPanel()->setTestMove(move);
+        QSignalSpy messages(&runner, &app::TuningRunner::message);
+        QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
+        runner.tune(30, 2);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            runs.count() > 0 ||
+                (messages.count() > 1 && messages.last().at(0).toString().startsWith(QStringLiteral("TUNE failed"))),
+            2 * kDriveTimeoutMs);
+        if (runs.isEmpty()) {
+            const QString why = messages.last().at(0).toString();
+            if (why.contains(QStringLiteral("ERR 80"))) QSKIP("the simulated drive does not implement TUNE yet");
+            QFAIL(qPrintable(why));
+        }
+        // A critically damped loop of bandwidth f rises 10-90 % in about 0.35 / f.
+        const auto& run = runner.runs().last();
+        QVERIFY(run.metrics.rise_s);
+        const double impliedHz = 0.35 / *run.metrics.rise_s;
+        // The simulated drive's TUNE (issue 4) currently gives about 13 Hz for TUNE 30 2; this turns into an
+        // XPASS (and fails) once it reaches the bandwidth asked for, so the marker gets removed then.
+        QEXPECT_FAIL("", "the simulated TUNE 30 2 gives a loop of about 13 Hz (issue 4)", Continue);
+        QVERIFY2(impliedHz > 15 && impliedHz < 60, qPrintable(QString::number(impliedHz)));
+    }
+};
+
+QTEST_MAIN(ScopeTuningTest)
+#include "scope_tuning_test.moc"

@@ -1,0 +1,99 @@
+// ScopePlot with 1,000,000 points (a .CSV-sized capture from disk): time to show it, and the frame time of
+// a pan and of a zoom (replot with immediate refresh), printed. Goal: a frame under 16 ms. No assertions
+// on time.
+#include "scope/scope_plot.h"
+
+#include <qcustomplot.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <numbers>
+#include <vector>
+
+namespace {
+
+scope::Capture bigCapture(std::size_t points) {
+    scope::Capture c;
+    c.interval_s = 0.001;
+    c.title = "1M points";
+    scope::CaptureChannel vfb{"VFB", "VEL", {}};
+    vfb.values.reserve(points);
+    for (std::size_t i = 0; i < points; ++i) {
+        const double t = double(i) * c.interval_s;
+        vfb.values.push_back(1000 * std::sin(2 * std::numbers::pi * 0.5 * t) +
+                             30 * std::sin(2 * std::numbers::pi * 37 * t));
+    }
+    c.channels.push_back(std::move(vfb));
+    return c;
+}
+
+struct Figures {
+    double median_ms = 0; // wall clock
+    double worst_ms = 0;
+    double cpu_median_ms = 0; // this thread's CPU time: what the frame costs when the machine is shared
+};
+
+double threadCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) / 1e6;
+}
+
+template <typename Step> Figures frames(scope::ScopePlot& plot, int count, Step step) {
+    std::vector<double> ms, cpu;
+    QElapsedTimer timer;
+    for (int i = 0; i < count; ++i) {
+        step(i);
+        const double cpuStart = threadCpuMs();
+        timer.start();
+        plot.customPlot()->replot(QCustomPlot::rpImmediateRefresh);
+        ms.push_back(double(timer.nsecsElapsed()) / 1e6);
+        cpu.push_back(threadCpuMs() - cpuStart);
+    }
+    std::sort(ms.begin(), ms.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {ms[ms.size() / 2], ms.back(), cpu[cpu.size() / 2]};
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    constexpr std::size_t kPoints = 1'000'000;
+    const scope::Capture capture = bigCapture(kPoints);
+    scope::ScopePlot plot;
+    plot.resize(1280, 720);
+    plot.show();
+    QApplication::processEvents();
+
+    QElapsedTimer timer;
+    timer.start();
+    plot.showCapture(capture);
+    plot.customPlot()->replot(QCustomPlot::rpImmediateRefresh);
+    const double showMs = double(timer.nsecsElapsed()) / 1e6;
+
+    QCPAxis* x = plot.customPlot()->xAxis;
+    const Figures whole = frames(plot, 30, [](int) {});
+    const Figures pan = frames(plot, 60, [x](int i) { x->moveRange((i % 2 ? -1 : 1) * x->range().size() * 0.05); });
+    x->setRange(400, 500); // zoomed in: 100,000 points visible
+    const Figures panZoomed = frames(plot, 60, [x](int i) { x->moveRange((i % 2 ? -1 : 1) * 2.0); });
+    plot.autoScale();
+    const Figures zoom = frames(plot, 60, [x](int i) { x->scaleRange(i < 30 ? 0.85 : 1 / 0.85, x->range().center()); });
+
+    std::printf("scope_plot_bench: %zu points, 1280x720 plot\n", kPoints);
+    std::printf("  show capture (copy into graph + store, first frame): %.1f ms\n", showMs);
+    auto print = [](const char* what, const Figures& f) {
+        std::printf("  frame, %-24s median %6.2f ms (CPU %6.2f ms), worst %6.2f ms   goal < 16 ms\n", what, f.median_ms,
+                    f.cpu_median_ms, f.worst_ms);
+    };
+    print("whole record:", whole);
+    print("pan, whole record:", pan);
+    print("pan, 100 s window:", panZoomed);
+    print("zoom in/out:", zoom);
+    return 0;
+}
