@@ -1,0 +1,314 @@
+// VariableModel: the catalog as a tree, with the values the poller reads.
+#include "variable_model.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QFont>
+
+namespace app {
+
+namespace cat = drive_core::catalog::bds5;
+
+namespace {
+constexpr quintptr kGroupId = 0; // internalId of a group row; a variable's is its group + 1
+
+QString text(std::string_view view) {
+    return QString::fromLatin1(view.data(), qsizetype(view.size()));
+}
+
+QString groupTitle(cat::VariableGroup group) {
+    switch (group) {
+    case cat::VariableGroup::Position: return VariableModel::tr("Position");
+    case cat::VariableGroup::Velocity: return VariableModel::tr("Velocity");
+    case cat::VariableGroup::Current: return VariableModel::tr("Current");
+    case cat::VariableGroup::LoopGains: return VariableModel::tr("Loop gains");
+    case cat::VariableGroup::Limits: return VariableModel::tr("Limits");
+    case cat::VariableGroup::Units: return VariableModel::tr("Units");
+    case cat::VariableGroup::Io: return VariableModel::tr("I/O");
+    case cat::VariableGroup::Switches: return VariableModel::tr("Switches");
+    case cat::VariableGroup::Communication: return VariableModel::tr("Communication");
+    case cat::VariableGroup::Timers: return VariableModel::tr("Timers");
+    case cat::VariableGroup::Record: return VariableModel::tr("Record");
+    case cat::VariableGroup::User: return VariableModel::tr("User (X, XS)");
+    case cat::VariableGroup::Internal: break;
+    }
+    return {};
+}
+
+QString conditionText(cat::WriteCondition condition) {
+    switch (condition) {
+    case cat::WriteCondition::Always: return VariableModel::tr("any time");
+    case cat::WriteCondition::Disabled: return VariableModel::tr("drive disabled");
+    case cat::WriteCondition::NoMotion: return VariableModel::tr("no motion");
+    case cat::WriteCondition::Never: return VariableModel::tr("read only");
+    case cat::WriteCondition::Factory: return VariableModel::tr("factory");
+    }
+    return {};
+}
+} // namespace
+
+VariableModel::VariableModel(QObject* parent) : QAbstractItemModel(parent) {
+    constexpr cat::VariableGroup kOrder[] = {
+        cat::VariableGroup::Position,  cat::VariableGroup::Velocity, cat::VariableGroup::Current,
+        cat::VariableGroup::LoopGains, cat::VariableGroup::Limits,   cat::VariableGroup::Units,
+        cat::VariableGroup::Io,        cat::VariableGroup::Switches, cat::VariableGroup::Communication,
+        cat::VariableGroup::Timers,    cat::VariableGroup::Record,   cat::VariableGroup::User};
+    for (const cat::VariableGroup group : kOrder) {
+        Group g{groupTitle(group), {}};
+        for (const cat::VariableInfo& info : cat::variables()) {
+            if (info.group != group) continue;
+            const QString stem = text(info.name);
+            const int first = info.firstIndex, last = info.lastIndex;
+            for (int i = first; i <= last; ++i) {
+                Row row{i == 0 ? stem : stem + QString::number(i), &info};
+                m_byName.insert(row.name, int(m_rows.size()));
+                g.rows.push_back(int(m_rows.size()));
+                m_groupOfRow.push_back(int(m_groups.size()));
+                m_positionInGroup.push_back(int(g.rows.size()) - 1);
+                m_rows.push_back(std::move(row));
+            }
+        }
+        if (!g.rows.empty()) m_groups.push_back(std::move(g));
+    }
+}
+
+QModelIndex VariableModel::index(int row, int column, const QModelIndex& parent) const {
+    if (column < 0 || column >= ColumnCount || row < 0) return {};
+    if (!parent.isValid()) return row < int(m_groups.size()) ? createIndex(row, column, kGroupId) : QModelIndex();
+    if (parent.internalId() != kGroupId) return {};
+    const Group& g = m_groups[std::size_t(parent.row())];
+    return row < int(g.rows.size()) ? createIndex(row, column, quintptr(parent.row()) + 1) : QModelIndex();
+}
+
+QModelIndex VariableModel::parent(const QModelIndex& child) const {
+    if (!child.isValid() || child.internalId() == kGroupId) return {};
+    return createIndex(int(child.internalId() - 1), 0, kGroupId);
+}
+
+int VariableModel::rowCount(const QModelIndex& parent) const {
+    if (!parent.isValid()) return int(m_groups.size());
+    if (parent.internalId() != kGroupId || parent.column() != 0) return 0;
+    return int(m_groups[std::size_t(parent.row())].rows.size());
+}
+
+int VariableModel::columnCount(const QModelIndex&) const {
+    return ColumnCount;
+}
+
+QVariant VariableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    switch (section) {
+    case Name: return tr("Variable");
+    case Value: return tr("Value");
+    case Unit: return tr("Unit");
+    case Limits: return tr("Limits");
+    case Condition: return tr("Writable");
+    case Description: return tr("Description");
+    default: return {};
+    }
+}
+
+QVariant VariableModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid()) return {};
+    if (index.internalId() == kGroupId) {
+        const Group& g = m_groups[std::size_t(index.row())];
+        if (role == Qt::DisplayRole && index.column() == Name)
+            return QStringLiteral("%1 (%2)").arg(g.title).arg(g.rows.size());
+        if (role == Qt::FontRole) {
+            QFont bold;
+            bold.setBold(true);
+            return bold;
+        }
+        return {};
+    }
+    const Group& g = m_groups[std::size_t(index.internalId() - 1)];
+    return rowData(m_rows[std::size_t(g.rows[std::size_t(index.row())])], index.column(), role);
+}
+
+QVariant VariableModel::rowData(const Row& row, int column, int role) const {
+    switch (role) {
+    case NameRole: return row.name;
+    case PinnedRole: return row.pinned ? QStringLiteral("pinned") : QString();
+    case ChangedRole: return row.changed;
+    case Qt::ToolTipRole: return text(row.info->description) + QStringLiteral(" (%1)").arg(text(row.info->manualLines));
+    case Qt::BackgroundRole:
+        return row.changed && column == Value ? QVariant(QBrush(QColor(0xff, 0xe0, 0x82))) : QVariant();
+    case Qt::ForegroundRole:
+        if (column == Value && !row.readable) return QBrush(QColor(0x9e, 0x9e, 0x9e));
+        return column == Condition || column == Limits || column == Unit ? QVariant(QBrush(QColor(0x5f, 0x63, 0x68)))
+                                                                         : QVariant();
+    case Qt::FontRole:
+        if (column == Name || column == Value) {
+            QFont font(QStringLiteral("monospace"));
+            font.setStyleHint(QFont::Monospace);
+            font.setBold(column == Name && row.pinned);
+            return font;
+        }
+        return {};
+    case Qt::TextAlignmentRole: return column == Value ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter)) : QVariant();
+    case Qt::EditRole:
+        if (column == Value) return row.value;
+        [[fallthrough]];
+    case Qt::DisplayRole:
+        switch (column) {
+        case Name: return row.pinned ? QStringLiteral("\u2605 ") + row.name : row.name;
+        case Value: return displayValue(row);
+        case Unit: return text(row.info->units);
+        case Limits: return limitsText(row);
+        case Condition: return conditionText(row.info->write);
+        case Description: return text(row.info->description);
+        default: return {};
+        }
+    default: return {};
+    }
+}
+
+QString VariableModel::displayValue(const Row& row) const {
+    if (!row.readable) return tr("(not readable)");
+    if (row.value.isEmpty()) return QString();
+    if (row.info->isSwitch) return row.value == QLatin1String("0") ? QStringLiteral("OFF") : QStringLiteral("ON");
+    return row.value;
+}
+
+QString VariableModel::limitsText(const Row& row) const {
+    const cat::VariableInfo& info = *row.info;
+    if (info.limits == cat::LimitClass::None) return QStringLiteral("\u2014");
+    if (info.limits == cat::LimitClass::Switch) return QStringLiteral("OFF/ON");
+    if (const auto user = VariableValidator::userLimits(info, validationContext())) {
+        // Whole 32-bit ranges say little as numbers: name them.
+        if (info.limits == cat::LimitClass::Long) return tr("any (32-bit)");
+        if (info.limits == cat::LimitClass::LongPositive && info.unitClass == cat::UnitClass::None)
+            return tr("\u2265 0 (32-bit)");
+        return QStringLiteral("%1 \u2026 %2")
+            .arg(QString::number(user->first, 'g', 7), QString::number(user->second, 'g', 7));
+    }
+    if (info.limits == cat::LimitClass::Long) return tr("any (32-bit)");
+    return tr("%1 \u2026 %2 (basic units)").arg(cat::minimumOf(info)).arg(cat::maximumOf(info));
+}
+
+bool VariableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (role != Qt::EditRole || index.column() != Value || !(flags(index) & Qt::ItemIsEditable)) return false;
+    const QString name = data(index, NameRole).toString();
+    const VariableValidator::Verdict verdict = VariableValidator::check(name, value.toString(), validationContext());
+    if (verdict.ok)
+        emit editRequested(name, verdict.instruction);
+    else
+        emit editRefused(name, verdict.message);
+    return false; // the value shown changes when the drive is read back
+}
+
+Qt::ItemFlags VariableModel::flags(const QModelIndex& index) const {
+    if (!index.isValid()) return Qt::NoItemFlags;
+    Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
+    if (index.internalId() == kGroupId || index.column() != Value) return f;
+    const Row& row = m_rows[std::size_t(m_groups[std::size_t(index.internalId() - 1)].rows[std::size_t(index.row())])];
+    const bool writable =
+        row.info->write != cat::WriteCondition::Never && row.info->write != cat::WriteCondition::Factory;
+    return writable ? f | Qt::ItemIsEditable : f;
+}
+
+QModelIndex VariableModel::indexOf(const QString& name, int column) const {
+    const auto it = m_byName.constFind(name.toUpper());
+    if (it == m_byName.constEnd()) return {};
+    const int g = m_groupOfRow[std::size_t(*it)];
+    return createIndex(m_positionInGroup[std::size_t(*it)], column, quintptr(g) + 1);
+}
+
+QStringList VariableModel::groupNames() const {
+    QStringList names;
+    for (const Group& g : m_groups) names << g.title;
+    return names;
+}
+
+void VariableModel::rowChanged(int rowIndex) {
+    const QModelIndex first = indexOf(m_rows[std::size_t(rowIndex)].name, 0);
+    emit dataChanged(first, first.siblingAtColumn(ColumnCount - 1));
+}
+
+void VariableModel::setValue(const QString& name, const QString& printed) {
+    const auto it = m_byName.constFind(name.toUpper());
+    if (it == m_byName.constEnd()) return;
+    Row& row = m_rows[std::size_t(*it)];
+    const bool changed = !row.value.isEmpty() && row.value != printed;
+    if (row.value == printed && row.changed == changed && row.readable) return;
+    row.changed = changed || (row.changed && row.value == printed);
+    row.value = printed;
+    row.readable = true;
+    rowChanged(*it);
+    if (row.info->group == cat::VariableGroup::Units) { // the limits of other variables are in these units
+        for (int g = 0; g < rowCount(); ++g) {
+            const QModelIndex group = index(g, 0);
+            emit dataChanged(index(0, Limits, group), index(rowCount(group) - 1, Limits, group));
+        }
+    }
+}
+
+QString VariableModel::value(const QString& name) const {
+    const auto it = m_byName.constFind(name.toUpper());
+    return it == m_byName.constEnd() ? QString() : m_rows[std::size_t(*it)].value;
+}
+
+std::optional<double> VariableModel::number(const QString& name) const {
+    bool ok = false;
+    const double v = value(name).toDouble(&ok);
+    return ok ? std::optional<double>(v) : std::nullopt;
+}
+
+bool VariableModel::isChanged(const QString& name) const {
+    const auto it = m_byName.constFind(name.toUpper());
+    return it != m_byName.constEnd() && m_rows[std::size_t(*it)].changed;
+}
+
+void VariableModel::clearChanged() {
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        if (!m_rows[i].changed) continue;
+        m_rows[i].changed = false;
+        rowChanged(int(i));
+    }
+}
+
+void VariableModel::setUnreadable(const QString& name) {
+    const auto it = m_byName.constFind(name.toUpper());
+    if (it == m_byName.constEnd()) return;
+    m_rows[std::size_t(*it)].readable = false;
+    rowChanged(*it);
+}
+
+bool VariableModel::isReadable(const QString& name) const {
+    const auto it = m_byName.constFind(name.toUpper());
+    return it != m_byName.constEnd() && m_rows[std::size_t(*it)].readable;
+}
+
+void VariableModel::setPinned(const QString& name, bool pinned) {
+    const auto it = m_byName.constFind(name.toUpper());
+    if (it == m_byName.constEnd() || m_rows[std::size_t(*it)].pinned == pinned) return;
+    m_rows[std::size_t(*it)].pinned = pinned;
+    rowChanged(*it);
+}
+
+bool VariableModel::isPinned(const QString& name) const {
+    const auto it = m_byName.constFind(name.toUpper());
+    return it != m_byName.constEnd() && m_rows[std::size_t(*it)].pinned;
+}
+
+QStringList VariableModel::pinned() const {
+    QStringList names;
+    for (const Row& row : m_rows)
+        if (row.pinned) names << row.name;
+    return names;
+}
+
+QString VariableModel::varLines(const QStringList& names) const {
+    QString out;
+    for (const QString& name : names) {
+        const QString v = value(name);
+        if (!v.isEmpty()) out += name.toUpper() + QLatin1Char(' ') + v + QLatin1Char('\n');
+    }
+    return out;
+}
+
+VariableValidator::Context VariableModel::validationContext() const {
+    return {[this](const QString& name) { return number(name); }};
+}
+
+} // namespace app

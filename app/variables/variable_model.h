@@ -1,0 +1,86 @@
+// VariableModel: every variable of the BDS5 catalog as a two-level tree (group -> variable) with the last
+// value read from the drive, unit, limits, programming condition and description. Widget-free: views,
+// the poller and tests share it. An edit of the Value column is validated and handed on as editRequested();
+// the model's value changes only when the drive is read again. GUI thread.
+#pragma once
+
+#include "variable_validator.h"
+
+#include <QAbstractItemModel>
+#include <QHash>
+#include <QStringList>
+
+#include <vector>
+
+namespace app {
+
+class VariableModel final : public QAbstractItemModel {
+    Q_OBJECT
+public:
+    enum Column { Name, Value, Unit, Limits, Condition, Description, ColumnCount };
+    enum Role { NameRole = Qt::UserRole + 1, PinnedRole, ChangedRole };
+
+    explicit VariableModel(QObject* parent = nullptr);
+
+    QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
+    QModelIndex parent(const QModelIndex& child) const override;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+    // The index of a variable ("VMAX", "X12") in the given column; invalid if unknown.
+    QModelIndex indexOf(const QString& name, int column = Name) const;
+    QStringList groupNames() const;
+    // A value as the drive printed it ("7500"); empty until read. A change from a previous read marks the
+    // row changed (highlighted) until clearChanged().
+    void setValue(const QString& name, const QString& printed);
+    QString value(const QString& name) const;
+    std::optional<double> number(const QString& name) const;
+    bool isChanged(const QString& name) const;
+    void clearChanged();
+    // Variables the drive refused to print (ERR on P): shown as such and not polled again.
+    void setUnreadable(const QString& name);
+    bool isReadable(const QString& name) const;
+    void setPinned(const QString& name, bool pinned);
+    bool isPinned(const QString& name) const;
+    QStringList pinned() const;
+    // "NAME value" lines (Motion Link's .VAR) for the given variables that have a value.
+    QString varLines(const QStringList& names) const;
+    VariableValidator::Context validationContext() const;
+
+signals:
+    // A user's edit passed validation: send instruction ("VMAX 3000") to the drive.
+    void editRequested(const QString& name, const QString& instruction);
+    // A user's edit was refused before sending; message names the drive error it would have caused.
+    void editRefused(const QString& name, const QString& message);
+
+private:
+    struct Row {
+        QString name;
+        const drive_core::catalog::bds5::VariableInfo* info = nullptr;
+        QString value;
+        bool changed = false;
+        bool pinned = false;
+        bool readable = true;
+    };
+    struct Group {
+        QString title;
+        std::vector<int> rows; // into m_rows
+    };
+
+    QVariant rowData(const Row& row, int column, int role) const;
+    QString displayValue(const Row& row) const;
+    QString limitsText(const Row& row) const;
+    void rowChanged(int rowIndex);
+
+    std::vector<Row> m_rows;
+    std::vector<Group> m_groups;
+    std::vector<int> m_groupOfRow;
+    std::vector<int> m_positionInGroup;
+    QHash<QString, int> m_byName;
+};
+
+} // namespace app

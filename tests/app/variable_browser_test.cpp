@@ -1,0 +1,170 @@
+// The variable browser (issue 7): the catalog as a grouped model, edit validation naming the drive's own
+// error, and — against the simulated BDS5 — an edit that reaches the drive and comes back, an out-of-range
+// edit refused before sending, a write the drive itself refuses, live polling of the rows in view, the
+// watch list and "Copy as .VAR".
+#include "app/drive/drive_connection.h"
+#include "app/main_window.h"
+#include "app/variables/variable_model.h"
+#include "app/variables/variable_sync.h"
+#include "app/variables/variable_validator.h"
+#include "app/variables/variables_dock.h"
+
+#include "serialport/bds5_session.h"
+
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QTreeView>
+
+using app::MainWindow;
+using app::VariableModel;
+using app::VariableValidator;
+
+namespace {
+constexpr int kDriveTimeoutMs = 15000;
+
+bool ready(const MainWindow& window) {
+    const auto* session = window.connection().session();
+    return session && session->state() == serialport::Bds5Session::State::Ready;
+}
+
+// A command typed by the test, with its answer.
+struct Asked {
+    QStringList lines;
+    bool done = false;
+};
+std::shared_ptr<Asked> ask(MainWindow& window, const QString& line) {
+    auto asked = std::make_shared<Asked>();
+    auto* session = window.connection().session();
+    const quint64 id = session->send(line);
+    QObject::connect(session, &serialport::Bds5Session::finished, session,
+                     [asked, id](quint64 done, const serialport::Bds5Response& response) {
+                         if (done != id) return;
+                         asked->lines = response.lines;
+                         for (const auto& e : response.errors) asked->lines << QStringLiteral("ERR %1").arg(e.code);
+                         asked->done = true;
+                     });
+    return asked;
+}
+} // namespace
+
+class VariableBrowserTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskVariableBrowserTest"));
+        QSettings().clear();
+    }
+
+    void theCatalogIsGroupedWithUnitsLimitsAndConditions() {
+        VariableModel model;
+        const QStringList groups = model.groupNames();
+        for (const char* g : {"Position", "Velocity", "Current", "Loop gains", "Limits", "Units", "I/O", "Switches",
+                              "Communication", "User (X, XS)"})
+            QVERIFY2(groups.contains(QString::fromLatin1(g)), g);
+        QVERIFY(model.indexOf(QStringLiteral("X250")).isValid());
+        QVERIFY(model.indexOf(QStringLiteral("XS50")).isValid());
+        QVERIFY(model.indexOf(QStringLiteral("I16")).isValid());
+        QVERIFY(!model.indexOf(QStringLiteral("X251")).isValid());
+        QCOMPARE(model.indexOf(QStringLiteral("VMAX"), VariableModel::Unit).data().toString(), QStringLiteral("VEL"));
+        QCOMPARE(model.indexOf(QStringLiteral("ADDR"), VariableModel::Limits).data().toString(),
+                 QStringLiteral("0 \u2026 90"));
+        QCOMPARE(model.indexOf(QStringLiteral("AMAX"), VariableModel::Condition).data().toString(),
+                 QStringLiteral("drive disabled"));
+        QVERIFY(!(model.indexOf(QStringLiteral("ACTIVE"), VariableModel::Value).flags() & Qt::ItemIsEditable));
+        QVERIFY(model.indexOf(QStringLiteral("X1"), VariableModel::Value).flags() & Qt::ItemIsEditable);
+        // Limits of scaled variables follow the drive's units once NUM/DEN are known: ACC in RPM/s.
+        QVERIFY(!VariableValidator::userLimits(*drive_core::catalog::bds5::findVariable("ACC")->info,
+                                               model.validationContext()));
+        model.setValue(QStringLiteral("ANUM"), QStringLiteral("4474"));
+        model.setValue(QStringLiteral("ADEN"), QStringLiteral("1000"));
+        const auto limits = VariableValidator::userLimits(*drive_core::catalog::bds5::findVariable("ACC")->info,
+                                                          model.validationContext());
+        QVERIFY(limits);
+        QCOMPARE(limits->first, 0.0);
+        QCOMPARE(qRound64(limits->second), qRound64(2147483647.0 * 1000 / 4474));
+    }
+
+    void editsAreCheckedAsTheDriveWouldAndNameItsError() {
+        VariableModel model;
+        const auto ctx = model.validationContext();
+        QCOMPARE(VariableValidator::check(QStringLiteral("X1"), QStringLiteral("42"), ctx).instruction,
+                 QStringLiteral("X1 42"));
+        QCOMPARE(VariableValidator::check(QStringLiteral("PL"), QStringLiteral("on"), ctx).instruction,
+                 QStringLiteral("PL 1"));
+        const auto range = VariableValidator::check(QStringLiteral("ADDR"), QStringLiteral("91"), ctx);
+        QVERIFY(!range.ok);
+        QVERIFY2(range.message.startsWith(QStringLiteral("ERR 83 BAD OR OUT OF RANGE")), qPrintable(range.message));
+        QVERIFY(VariableValidator::check(QStringLiteral("VFB"), QStringLiteral("1"), ctx)
+                    .message.startsWith(QStringLiteral("ERR 81")));
+        model.setValue(QStringLiteral("ACTIVE"), QStringLiteral("1"));
+        QVERIFY(VariableValidator::check(QStringLiteral("AMAX"), QStringLiteral("1000"), model.validationContext())
+                    .message.startsWith(QStringLiteral("ERR 51")));
+        // A value that differs from the last read is highlighted until the highlight fades.
+        model.setValue(QStringLiteral("X3"), QStringLiteral("1"));
+        QVERIFY(!model.isChanged(QStringLiteral("X3")));
+        model.setValue(QStringLiteral("X3"), QStringLiteral("2"));
+        QVERIFY(model.isChanged(QStringLiteral("X3")));
+        QVERIFY(model.indexOf(QStringLiteral("X3"), VariableModel::Value).data(Qt::BackgroundRole).isValid());
+        model.clearChanged();
+        QVERIFY(!model.isChanged(QStringLiteral("X3")));
+    }
+
+    void anEditReachesTheDriveAndComesBack() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::VariablesDock& dock = *window.variablesDock();
+        dock.show();
+        dock.reveal(QStringLiteral("X1"));
+        dock.editValue(QStringLiteral("X1"), QStringLiteral("1234"));
+        QTRY_COMPARE_WITH_TIMEOUT(dock.model().value(QStringLiteral("X1")), QStringLiteral("1234"), kDriveTimeoutMs);
+        QCOMPARE(dock.statusText(), QStringLiteral("X1 1234 sent"));
+        auto asked = ask(window, QStringLiteral("P X1"));
+        QTRY_VERIFY_WITH_TIMEOUT(asked->done, kDriveTimeoutMs);
+        QCOMPARE(asked->lines, QStringList{QStringLiteral("        1234")});
+
+        // The watch list and Copy as .VAR.
+        dock.model().setPinned(QStringLiteral("X1"), true);
+        dock.showWatchList(true);
+        QTRY_VERIFY(dock.watchView()->model()->rowCount() == 1);
+        QCOMPARE(dock.selectionAsVar(), QStringLiteral("X1 1234\n"));
+
+        // Live values: the rows in view are read, VMAX among them once it is scrolled to.
+        dock.reveal(QStringLiteral("VMAX"));
+        QTRY_COMPARE_WITH_TIMEOUT(dock.model().value(QStringLiteral("VMAX")), QStringLiteral("7500"), kDriveTimeoutMs);
+        // A value changed behind the browser's back shows, highlighted.
+        asked = ask(window, QStringLiteral("X1=77"));
+        QTRY_VERIFY_WITH_TIMEOUT(asked->done, kDriveTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(dock.model().value(QStringLiteral("X1")), QStringLiteral("77"), kDriveTimeoutMs);
+    }
+
+    void anOutOfRangeEditIsRefusedWithTheDrivesError() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::VariablesDock& dock = *window.variablesDock();
+        dock.show();
+        QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
+        dock.editValue(QStringLiteral("ADDR"), QStringLiteral("91"));
+        QVERIFY2(dock.statusText().startsWith(QStringLiteral("ERR 83 BAD OR OUT OF RANGE")),
+                 qPrintable(dock.statusText()));
+        for (const QList<QVariant>& bytes : sent) QVERIFY(!bytes.first().toByteArray().contains("ADDR"));
+
+        // The drive's own refusal: EXTLOOP may change only while disabled, and the browser has not read
+        // ACTIVE, so the drive is the one to say no (ERR 51).
+        dock.hide(); // no polling: ACTIVE stays unknown
+        for (const char* line : {"PLIM OFF", "EN"}) window.connection().sendCommand(QString::fromLatin1(line));
+        dock.editValue(QStringLiteral("EXTLOOP"), QStringLiteral("ON"));
+        QTRY_VERIFY_WITH_TIMEOUT(dock.statusText().startsWith(QStringLiteral("The drive refused EXTLOOP 1: ERR 51")),
+                                 kDriveTimeoutMs);
+    }
+};
+
+QTEST_MAIN(VariableBrowserTest)
+#include "variable_browser_test.moc"
