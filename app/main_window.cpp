@@ -15,6 +15,13 @@
 #include "terminal_dock.h"
 #include "terminal_widget.h"
 #include "variables_controller.h"
+#include "scope/scope_controller.h"
+#include "dep01/dep01_panel.h"
+#include "errors/error_log_dock.h"
+#include "errors/program_line_jump.h"
+#include "io/io_panel.h"
+#include "variables/variables_dock.h"
+#include "wizard/setup_wizard.h"
 
 #include "editor/diagnostics_status.h"
 #include "editor/keymap.h"
@@ -116,6 +123,12 @@ void MainWindow::createMenus() {
     menuBar()->addMenu(m_programController->menu());
     m_variablesController = new VariablesController(*this);
     menuBar()->addMenu(m_variablesController->menu());
+    m_scopeController = new ScopeController(*this); // Scope menu; scope and tuning docks, hidden until used
+    menuBar()->addMenu(m_scopeController->menu());
+    for (QDockWidget* dock : {m_scopeController->scopeDock(), m_scopeController->tuningDock()}) {
+        addDockWidget(Qt::BottomDockWidgetArea, dock);
+        dock->hide(); // tabbed with the terminal when first shown (ScopeController)
+    }
 
     QMenu* drive = menuBar()->addMenu(tr("&Drive"));
     drive->addAction(tr("&Connect..."), QKeySequence(tr("Ctrl+K")), this, &MainWindow::showConnectionDialog);
@@ -129,6 +142,11 @@ void MainWindow::createMenus() {
     view->addAction(m_captureDock->toggleViewAction());
     view->addAction(m_helpBrowser->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
+    for (QDockWidget* dock :
+         std::initializer_list<QDockWidget*>{m_variablesDock, m_errorLogDock, m_ioPanel, m_dep01Panel})
+        view->addAction(dock->toggleViewAction());
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    tools->addAction(tr("&Setup Wizard..."), this, [this] { SetupWizard::openFor(*m_connection, this); });
 
     m_captureDock->addToMenu(menuBar()->addMenu(tr("&Capture")));
     m_optionsController->addToMenu(menuBar()->addMenu(tr("&Options")));
@@ -159,6 +177,18 @@ void MainWindow::createDriveTools() {
     m_helpBrowser->hide();
     m_outlineDock = new editor::OutlineDock(this); // labels and tasks of the current program, Go to label
     addDockWidget(Qt::RightDockWidgetArea, m_outlineDock);
+    m_variablesDock = new VariablesDock(*m_connection, this); // issue 7 docks: hidden until asked for
+    m_errorLogDock = new ErrorLogDock(*m_connection, this);
+    m_ioPanel = new IoPanel(*m_connection, this);
+    m_dep01Panel = new Dep01Panel(*m_connection, this);
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_variablesDock, m_ioPanel, m_dep01Panel}) {
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        dock->hide();
+    }
+    addDockWidget(Qt::BottomDockWidgetArea, m_errorLogDock);
+    m_errorLogDock->hide();
+    connect(m_errorLogDock, &ErrorLogDock::goToProgramLine, this,
+            [this](int driveLine) { ProgramLineJump::show(*editor(), driveLine); });
 }
 
 void MainWindow::createStatusBar() {

@@ -30,6 +30,11 @@ class HelpBrowser;
 class OptionsController;
 class ProgramController;
 class VariablesController;
+class ScopeController;
+class VariablesDock;
+class ErrorLogDock;
+class IoPanel;
+class Dep01Panel;
 class TerminalDock;
 class TerminalWidget;
 
@@ -65,6 +70,13 @@ public:
     // The Program and Variables menus (downloads, uploads, verify, .VAR transfers).
     ProgramController& programController() const { return *m_programController; }
     VariablesController& variablesController() const { return *m_variablesController; }
+    // The Scope menu, the Scope dock and the Tuning panel dock (issue 6).
+    ScopeController& scopeController() const { return *m_scopeController; }
+    // Issue 7: variable browser, error log, simulator I/O panel, DEP-01 panel (View menu; hidden at first).
+    VariablesDock* variablesDock() const { return m_variablesDock; }
+    ErrorLogDock* errorLogDock() const { return m_errorLogDock; }
+    IoPanel* ioPanel() const { return m_ioPanel; }
+    Dep01Panel* dep01Panel() const { return m_dep01Panel; }
 
 signals:
     void currentEditorChanged(editor::ProgramEditor* editor);
@@ -100,6 +112,11 @@ private:
     editor::DiagnosticsStatus* m_diagnosticsStatus = nullptr;
     ProgramController* m_programController = nullptr;
     VariablesController* m_variablesController = nullptr;
+    ScopeController* m_scopeController = nullptr;
+    VariablesDock* m_variablesDock = nullptr;
+    ErrorLogDock* m_errorLogDock = nullptr;
+    IoPanel* m_ioPanel = nullptr;
+    Dep01Panel* m_dep01Panel = nullptr;
     QLabel* m_linkLabel = nullptr;
     QLabel* m_portLabel = nullptr;
     QLabel* m_modeLabel = nullptr;

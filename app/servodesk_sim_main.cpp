@@ -1,9 +1,11 @@
 // servodesk-sim: a simulated drive on a new pseudo-terminal (--pty) or on stdin/stdout (--stdio),
-// running in real time until killed. Any serial program (picocom, pyserial, the IDE) can talk to it.
+// running in real time until killed. Any serial program (picocom, pyserial, the IDE) can talk to it;
+// --control adds a Unix-domain socket for the bench (inputs, limits, load, motor, power).
 #include "drive_core/drive_factory.h"
 #include "serialport/pty_drive_host.h"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -21,10 +23,20 @@ void onSignal(int) {
 
 int usage(int code) {
     std::fprintf(code ? stderr : stdout,
-                 "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio) [--speed F]\n"
-                 "  --pty       create a pseudo-terminal; its path is printed first as \"PTY /dev/pts/N\"\n"
-                 "  --stdio     talk on stdin/stdout (a lone LF counts as CR); stops at end of input\n"
-                 "  --speed F   run simulated time F times faster than the wall clock (default 1)\n");
+                 "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio) [--speed F] [--control PATH]\n"
+                 "                     [--link PATH]\n"
+                 "  --pty           create a pseudo-terminal; its path is printed first as \"PTY /dev/pts/N\"\n"
+                 "  --stdio         talk on stdin/stdout (a lone LF counts as CR); stops at end of input\n"
+                 "  --speed F       run simulated time F times faster than the wall clock (default 1)\n"
+                 "  --link PATH     with --pty: also make PATH a symbolic link to the pty, replacing a stale\n"
+                 "                  one, so a client can reconnect by name after a restart\n"
+                 "  --control PATH  listen on a Unix-domain socket at PATH for bench commands, one a line,\n"
+                 "                  each answered with one line (OK, ERROR <reason>, or the status):\n"
+                 "                    input N on|off   enable on|off   motion on|off   home on|off\n"
+                 "                    home-at REV   limits on|off on|off (positive, negative)\n"
+                 "                    load-torque NM   load-inertia KGM2   master-hz HZ   motor NAME\n"
+                 "                    power-cycle   status\n"
+                 "                  With --pty, \"CONTROL PATH\" is printed after the PTY line.\n");
     return code;
 }
 
@@ -35,6 +47,8 @@ int main(int argc, char** argv) {
     bool pty = false;
     bool stdio = false;
     serialport::PtyDriveHost::Options options;
+    std::string controlPath;
+    std::string linkPath;
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         const bool hasValue = i + 1 < argc;
@@ -46,6 +60,10 @@ int main(int argc, char** argv) {
             stdio = true;
         else if (arg == "--speed" && hasValue)
             options.speedFactor = std::atof(argv[++i]);
+        else if (arg == "--control" && hasValue)
+            controlPath = argv[++i];
+        else if (arg == "--link" && hasValue)
+            linkPath = argv[++i];
         else if (arg == "--help" || arg == "-h")
             return usage(0);
         else {
@@ -70,13 +88,26 @@ int main(int argc, char** argv) {
 
     options.lfIsCr = stdio;
     serialport::PtyDriveHost host(std::move(drive), options);
+    if (!controlPath.empty() && !host.listenControl(controlPath)) {
+        std::fprintf(stderr, "servodesk-sim: %s\n", host.errorText().c_str());
+        return 1;
+    }
     if (pty) {
         const std::string path = host.openPty();
         if (path.empty()) {
             std::fprintf(stderr, "servodesk-sim: %s\n", host.errorText().c_str());
             return 1;
         }
+        if (!linkPath.empty()) {
+            ::unlink(linkPath.c_str()); // a link left by a previous run that was killed
+            if (::symlink(path.c_str(), linkPath.c_str()) != 0) {
+                std::fprintf(stderr, "servodesk-sim: cannot link %s to %s: %s\n", linkPath.c_str(), path.c_str(),
+                             std::strerror(errno));
+                return 1;
+            }
+        }
         std::printf("PTY %s\n", path.c_str());
+        if (!controlPath.empty()) std::printf("CONTROL %s\n", controlPath.c_str());
         std::fflush(stdout);
     } else {
         host.useDescriptors(STDIN_FILENO, STDOUT_FILENO);

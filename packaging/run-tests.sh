@@ -10,6 +10,8 @@ echo "build: $(( $(date +%s) - start )) s on $(nproc) cores"
 cd "$here/.."
 # The engines and protocol code under ASan + UBSan.
 bash packaging/run-sanitizers.sh
+# Every libFuzzer target for a bounded time (clang + ASan + UBSan); executions and findings are printed.
+bash packaging/run-fuzzers.sh
 # The .deb, installed with apt and run from its installed paths (as root only: it installs system-wide).
 if [[ $(id -u) -eq 0 ]]; then bash packaging/check-installed.sh build; fi
 ctest --preset default -j "$(nproc)"

@@ -51,6 +51,8 @@ void Bds5Download::enter() {
 
 bool Bds5Download::retry(const QString& reason) {
     if (isCancelling() || m_full || m_attempt >= m_options.attempts || !session()) return false;
+    // A closed link (the cable pulled) is not a damaged line: say so now rather than wait for it.
+    if (session()->state() == Bds5Session::State::Closed) return false;
     ++m_attempt;
     m_result = {};
     m_sent = 0;

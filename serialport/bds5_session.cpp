@@ -70,6 +70,7 @@ void Bds5Session::sendUrgent(const QByteArray& bytes) {
 }
 
 void Bds5Session::passRaw(const QByteArray& bytes) {
+    if (!m_link.isOpen()) return; // nothing to type into; the state stays Closed
     for (const char c : bytes) {
         if (c == '\r' || c == '\x1b' || c == '\x18') m_rawLineOpen = false;
         else if (c >= ' ') m_rawLineOpen = true;
@@ -99,12 +100,15 @@ void Bds5Session::onLinkClosed() {
     m_silence.stop();
     m_timeout.stop();
     m_wake.stop();
-    if (m_current) emit failed(m_current->id, tr("the link closed before the drive answered"));
-    m_current.reset();
-    cancelPending();
     m_resyncing = false;
     m_mode = Bds5Mode::Unknown;
+    // Closed before anyone hears of the failure, so no one reacting to it (a download starting again)
+    // takes the session for one that will answer.
     setState(State::Closed);
+    const auto current = std::move(m_current);
+    m_current.reset();
+    if (current) emit failed(current->id, tr("the link closed before the drive answered"));
+    cancelPending();
 }
 
 void Bds5Session::onBytes(const QByteArray& bytes) {

@@ -9,6 +9,8 @@
 #include <optional>
 #include <poll.h>
 #include <stdlib.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <termios.h>
 #include <unistd.h>
 #include <utility>
@@ -27,6 +29,69 @@ PtyDriveHost::PtyDriveHost(std::unique_ptr<drive_core::Drive> drive, Options opt
 PtyDriveHost::~PtyDriveHost() {
     if (m_slaveFd >= 0) ::close(m_slaveFd);
     if (m_masterFd >= 0) ::close(m_masterFd);
+    for (const ControlClient& c : m_controlClients) ::close(c.fd);
+    if (m_controlFd >= 0) {
+        ::close(m_controlFd);
+        ::unlink(m_controlPath.c_str());
+    }
+}
+
+bool PtyDriveHost::listenControl(const std::string& path) {
+    sockaddr_un address{};
+    if (path.empty() || path.size() >= sizeof address.sun_path) {
+        m_error = "control socket path is empty or too long: " + path;
+        return false;
+    }
+    address.sun_family = AF_UNIX;
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    m_controlFd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (m_controlFd >= 0) ::unlink(path.c_str()); // a socket left by an earlier run
+    if (m_controlFd < 0 || ::bind(m_controlFd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+        ::listen(m_controlFd, 4) != 0) {
+        m_error = "cannot listen on " + path + ": " + std::strerror(errno);
+        if (m_controlFd >= 0) ::close(m_controlFd);
+        m_controlFd = -1;
+        return false;
+    }
+    m_controlPath = path;
+    return true;
+}
+
+// Between two drive steps: new clients, then every complete line of every client, answered in order.
+void PtyDriveHost::serveControl() {
+    if (m_controlFd < 0) return;
+    for (int fd; (fd = ::accept4(m_controlFd, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC)) >= 0;)
+        m_controlClients.push_back({fd, {}});
+    char buffer[1024];
+    for (auto it = m_controlClients.begin(); it != m_controlClients.end();) {
+        bool closed = false;
+        for (;;) {
+            const ssize_t n = ::read(it->fd, buffer, sizeof buffer);
+            if (n > 0) {
+                it->pending.append(buffer, std::size_t(n));
+                continue;
+            }
+            closed = n == 0 || (errno != EAGAIN && errno != EINTR);
+            break;
+        }
+        for (auto end = it->pending.find('\n'); end != std::string::npos; end = it->pending.find('\n')) {
+            std::string line = it->pending.substr(0, end);
+            it->pending.erase(0, end + 1);
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            drive_core::SimulatorControls* controls = m_drive->controls();
+            std::string answer = controls ? drive_core::runSimulatorCommand(*controls, line)
+                                          : std::string("ERROR this drive has no simulator controls");
+            answer += '\n';
+            // Answers are short; a client that does not read them loses them rather than stalling the drive.
+            [[maybe_unused]] const ssize_t written = ::send(it->fd, answer.data(), answer.size(), MSG_NOSIGNAL);
+        }
+        if (closed) {
+            ::close(it->fd);
+            it = m_controlClients.erase(it);
+        } else {
+            ++it;
+        }
+    }
 }
 
 std::string PtyDriveHost::openPty() {
@@ -100,6 +165,7 @@ int PtyDriveHost::run(const std::atomic<bool>& stop) {
             ++ticks;
         }
         if (ticks == kMaxTicksPerWake) simulatedUs = double(m_drive->now().count());
+        serveControl();
         m_backlog += m_drive->takeTransmitted(); // the drive's UART already paces at its BAUD rate
         flushOutput();
         if (eofAt && now - *eofAt > kDrainAfterEof) return 0;

@@ -1,5 +1,6 @@
 // Puts a simulated drive on a pseudo-terminal (or on a pair of file descriptors such as stdin/stdout)
-// and runs it in real time. Plain POSIX, no Qt: this is the engine of servodesk-sim.
+// and runs it in real time, with an optional control socket for the bench (SimulatorControls' text
+// form). Plain POSIX, no Qt: this is the engine of servodesk-sim.
 #pragma once
 
 #include "drive_core/drive.h"
@@ -7,6 +8,7 @@
 #include <atomic>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace serialport {
 
@@ -27,6 +29,11 @@ public:
     // Uses the given descriptors instead of a pty (servodesk-sim --stdio).
     void useDescriptors(int inFd, int outFd);
 
+    // Listens on a Unix-domain stream socket at path for the bench's text commands (one a line, answered
+    // with one line: runSimulatorCommand()); any number of clients. A stale socket file is replaced.
+    // False with errorText() set on failure. The socket file is removed when the host is destroyed.
+    bool listenControl(const std::string& path);
+
     // Powers the drive up and runs it until stop becomes true or the input reaches end of file
     // (stdio only). Returns 0, or 1 on an I/O error (errorText() says which).
     int run(const std::atomic<bool>& stop);
@@ -35,6 +42,12 @@ public:
 
 private:
     void flushOutput();
+    void serveControl(); // accepts clients, runs their complete lines (between drive steps)
+
+    struct ControlClient {
+        int fd = -1;
+        std::string pending; // received, not yet a complete line
+    };
 
     std::unique_ptr<drive_core::Drive> m_drive;
     Options m_options;
@@ -45,6 +58,9 @@ private:
     std::string m_backlog; // sent by the drive, not yet accepted by the pty (its client is slow)
     bool m_lastWasCr = false;
     std::string m_error;
+    int m_controlFd = -1;
+    std::string m_controlPath;
+    std::vector<ControlClient> m_controlClients;
 };
 
 } // namespace serialport

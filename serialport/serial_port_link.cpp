@@ -48,7 +48,12 @@ void SerialPortLink::onError(QSerialPort::SerialPortError error) {
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError) return;
     const QString reason = m_port.errorString();
     emit errorOccurred(tr("%1: %2").arg(m_portName, reason));
-    if (error == QSerialPort::ResourceError && m_port.isOpen()) { // the device went away (cable pulled)
+    // The device went away (a USB adapter unplugged, the pty's far end gone): reads report a resource
+    // error, writes a write error (EIO). Either way nothing more will pass: close, so the owner can
+    // reconnect.
+    const bool gone = error == QSerialPort::ResourceError || error == QSerialPort::WriteError ||
+                      error == QSerialPort::ReadError;
+    if (gone && m_port.isOpen()) {
         m_port.close();
         emit closed();
     }

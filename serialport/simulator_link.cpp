@@ -9,6 +9,7 @@ namespace serialport {
 
 SimulatorLink::SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent)
     : Link(parent), m_family(family), m_options(options) {
+    qRegisterMetaType<drive_core::SimulatorStatus>();
     m_thread.setObjectName(QStringLiteral("simulated-drive"));
 }
 
@@ -20,6 +21,10 @@ void SimulatorLink::open() {
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     connect(m_worker, &SimulatorWorker::transmitted, this, &Link::bytesReceived);
+    connect(m_worker, &SimulatorWorker::statusChanged, this, [this](const drive_core::SimulatorStatus& status) {
+        m_status = status;
+        emit simulatorStatus(status);
+    });
     connect(m_worker, &SimulatorWorker::failed, this, [this](const QString& message) {
         emit errorOccurred(message);
         close();
@@ -45,6 +50,13 @@ void SimulatorLink::write(const QByteArray& bytes) {
         return;
     }
     QMetaObject::invokeMethod(m_worker, [worker = m_worker, bytes] { worker->receive(bytes); }, Qt::QueuedConnection);
+}
+
+void SimulatorLink::control(std::function<void(drive_core::SimulatorControls&)> change) {
+    if (!m_open || !m_worker || !change) return;
+    QMetaObject::invokeMethod(
+        m_worker, [worker = m_worker, change = std::move(change)] { worker->control(change); },
+        Qt::QueuedConnection);
 }
 
 QString SimulatorLink::description() const {

@@ -8,6 +8,7 @@
 
 #include <QThread>
 
+#include <functional>
 #include <memory>
 
 namespace serialport {
@@ -37,12 +38,25 @@ public:
     // The worker hands bytes over every 1 ms tick: a few ticks of silence is a pause.
     int quietMs() const override { return 4; }
 
+    // The simulator's bench (inputs, load, motor, power), not its serial port: the change runs in the
+    // worker thread before the drive's next step. Ignored while the link is closed. GUI thread.
+    void control(std::function<void(drive_core::SimulatorControls&)> change);
+    // The latest bench snapshot (also sent by simulatorStatus() every kStatusIntervalMs while open).
+    drive_core::SimulatorStatus lastStatus() const { return m_status; }
+    static constexpr int kStatusIntervalMs = 100;
+
+signals:
+    void simulatorStatus(const drive_core::SimulatorStatus& status);
+
 private:
     drive_core::DriveFamily m_family;
     Options m_options;
     QThread m_thread;
     SimulatorWorker* m_worker = nullptr; // lives in m_thread; deleted when the thread finishes
     bool m_open = false;
+    drive_core::SimulatorStatus m_status;
 };
 
 } // namespace serialport
+
+Q_DECLARE_METATYPE(drive_core::SimulatorStatus)

@@ -1,6 +1,8 @@
 // Simulated-drive worker: 1 ms drive ticks paced to the wall clock, baud-paced transmit.
 #include "simulator_worker.h"
 
+#include "simulator_fallback_controls.h"
+
 #include "drive_core/drive_factory.h"
 
 #include <algorithm>
@@ -42,6 +44,28 @@ void SimulatorWorker::receive(const QByteArray& bytes) {
     if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
 }
 
+drive_core::SimulatorControls* SimulatorWorker::controls() {
+    if (!m_drive) return nullptr;
+    if (auto* own = m_drive->controls()) return own;
+    if (!m_fallbackControls) m_fallbackControls = std::make_unique<SimulatorFallbackControls>(*m_drive);
+    return m_fallbackControls.get();
+}
+
+void SimulatorWorker::control(const std::function<void(drive_core::SimulatorControls&)>& change) {
+    drive_core::SimulatorControls* bench = controls();
+    if (!bench) return;
+    change(*bench);
+    // An input may fire an alarm at once: let the drive see it before the status goes out.
+    m_drive->step(std::chrono::microseconds(0));
+    const std::string out = m_drive->takeTransmitted();
+    if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
+    reportStatus();
+}
+
+void SimulatorWorker::reportStatus() {
+    if (drive_core::SimulatorControls* bench = controls()) emit statusChanged(bench->status());
+}
+
 void SimulatorWorker::tick() {
     const qint64 wallUs = m_clock.nsecsElapsed() / 1000;
     const qint64 wallDeltaUs = wallUs - m_lastWallUs;
@@ -56,6 +80,10 @@ void SimulatorWorker::tick() {
     // The drive's own UART sends at its BAUD rate: what it has sent is on the wire now.
     const std::string out = m_drive->takeTransmitted();
     if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
+    if (wallUs - m_lastStatusUs >= SimulatorLink::kStatusIntervalMs * 1000) {
+        m_lastStatusUs = wallUs;
+        reportStatus();
+    }
 }
 
 } // namespace serialport

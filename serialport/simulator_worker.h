@@ -9,6 +9,8 @@
 #include <QObject>
 #include <QTimer>
 
+#include <functional>
+
 namespace serialport {
 
 class SimulatorWorker final : public QObject {
@@ -20,17 +22,24 @@ public:
     // Worker thread only (invoked through queued calls).
     void start();
     void receive(const QByteArray& bytes);
+    // Applies a bench change (SimulatorLink::control), then reports the status at once.
+    void control(const std::function<void(drive_core::SimulatorControls&)>& change);
 
 signals:
     void transmitted(const QByteArray& bytes);
+    void statusChanged(const drive_core::SimulatorStatus& status);
     void failed(const QString& message);
 
 private:
     void tick();
+    drive_core::SimulatorControls* controls();
+    void reportStatus();
 
     drive_core::DriveFamily m_family;
     SimulatorLink::Options m_options;
     std::unique_ptr<drive_core::Drive> m_drive;
+    std::unique_ptr<drive_core::SimulatorControls> m_fallbackControls; // until the family offers controls()
+    qint64 m_lastStatusUs = 0;
     QTimer* m_timer = nullptr;
     QElapsedTimer m_clock;
     qint64 m_lastWallUs = 0;

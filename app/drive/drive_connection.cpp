@@ -5,7 +5,14 @@
 
 namespace app {
 
-DriveConnection::DriveConnection(QObject* parent) : QObject(parent) {}
+namespace {
+constexpr int kReconnectMs = 1000;
+}
+
+DriveConnection::DriveConnection(QObject* parent) : QObject(parent) {
+    m_reconnect.setInterval(kReconnectMs);
+    connect(&m_reconnect, &QTimer::timeout, this, &DriveConnection::tryReconnect);
+}
 
 DriveConnection::~DriveConnection() {
     blockSignals(true); // whoever listens may be half destroyed already
@@ -19,9 +26,14 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
     m_link = choice.makeLink();
     m_session = std::make_unique<serialport::Bds5Session>(*m_link);
     serialport::Link* link = m_link.get();
-    connect(link, &serialport::Link::opened, this, [this] { emit connectedChanged(true); });
-    connect(link, &serialport::Link::closed, this, [this] { emit connectedChanged(false); });
-    connect(link, &serialport::Link::errorOccurred, this, &DriveConnection::errorOccurred);
+    connect(link, &serialport::Link::opened, this, [this] {
+        m_reconnect.stop();
+        emit connectedChanged(true);
+    });
+    connect(link, &serialport::Link::closed, this, &DriveConnection::onLinkClosed);
+    connect(link, &serialport::Link::errorOccurred, this, [this](const QString& message) {
+        if (!m_reconnect.isActive()) emit errorOccurred(message); // not once a second while it is away
+    });
     connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
     connect(m_session.get(), &serialport::Bds5Session::rawSent, this, &DriveConnection::rawSent);
     connect(m_session.get(), &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
@@ -32,7 +44,25 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
 }
 
 void DriveConnection::disconnectDrive() {
-    if (m_link) m_link->close();
+    m_reconnect.stop();
+    if (!m_link) return;
+    m_closing = true;
+    m_link->close();
+    m_closing = false;
+}
+
+void DriveConnection::onLinkClosed() {
+    emit connectedChanged(false);
+    if (m_closing || m_reconnect.isActive()) return;
+    emit errorOccurred(tr("The connection to the drive was lost (%1). Reconnecting every second; nothing "
+                          "in the editors is affected. Drive > Disconnect stops trying.")
+                           .arg(linkDescription()));
+    m_reconnect.start();
+}
+
+void DriveConnection::tryReconnect() {
+    if (!m_link || m_link->isOpen()) return m_reconnect.stop();
+    m_link->open(); // opened() stops the timer; a failure stays quiet and is tried again
 }
 
 QString DriveConnection::linkDescription() const {
@@ -62,8 +92,11 @@ bool DriveConnection::checkConnected() {
 }
 
 void DriveConnection::teardown() {
+    m_reconnect.stop();
     if (!m_link) return;
+    m_closing = true;
     m_link->close(); // emits closed() while the session still listens, so pending commands fail cleanly
+    m_closing = false;
     m_session.reset();
     m_link->disconnect(this);
     m_link.reset();

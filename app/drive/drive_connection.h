@@ -9,6 +9,7 @@
 #include "serialport/link.h"
 
 #include <QObject>
+#include <QTimer>
 
 #include <memory>
 
@@ -21,11 +22,14 @@ public:
     ~DriveConnection() override;
 
     // Closes any current connection, then creates and opens the link for choice. Errors arrive through
-    // errorOccurred(); the connection stays (closed) so the status bar can still name it.
+    // errorOccurred(); the connection stays (closed) so the status bar can still name it. When an open
+    // link closes by itself (the cable pulled, the device gone), it is reopened every second until it
+    // answers or the user disconnects; editors and queued work outside the session are untouched.
     void connectTo(const ConnectionChoice& choice);
     void disconnectDrive();
 
     bool isConnected() const { return m_link && m_link->isOpen(); }
+    bool isReconnecting() const { return m_reconnect.isActive(); }
     bool hasLink() const { return m_link != nullptr; }
     ConnectionChoice choice() const { return m_choice; }
     QString linkDescription() const;
@@ -49,6 +53,8 @@ signals:
 
 private:
     void teardown();
+    void onLinkClosed();
+    void tryReconnect();
     bool checkConnected(); // says "not connected" once, not on every key press
 
     ConnectionChoice m_choice;
@@ -56,6 +62,8 @@ private:
     std::unique_ptr<serialport::Link> m_link;
     std::unique_ptr<serialport::Bds5Session> m_session;
     bool m_reportedNotConnected = false; // say "not connected" once, not on every key press
+    bool m_closing = false;              // the user (or a new connection) closes the link: no reconnect
+    QTimer m_reconnect;
 };
 
 } // namespace app

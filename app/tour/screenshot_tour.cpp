@@ -2,6 +2,7 @@
 #include "screenshot_tour.h"
 
 #include "connection_dialog.h"
+#include "docks_tour_steps.h"
 #include "drive_connection.h"
 #include "drive_tour_steps.h"
 #include "editor_tour_steps.h"
@@ -10,6 +11,7 @@
 #include "terminal_dock.h"
 #include "terminal_widget.h"
 #include "transfer_tour_steps.h"
+#include "scope_tour_steps.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"
@@ -85,6 +87,8 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     for (Step& step : tabsTourSteps(m_window, m_outputDir)) steps.push_back(std::move(step));
     for (Step& step : editorTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : driveTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : scopeTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : docksTourSteps(m_window)) steps.push_back(std::move(step));
     return steps;
 }
 
