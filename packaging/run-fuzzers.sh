@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every libFuzzer target for a bounded time (issue 11), built with clang + ASan + UBSan in build-fuzz.
-# Each starts from its corpus in tests/fuzz/corpus/<name> and keeps what it learns in build-fuzz; a crash,
+# Each starts from its seed corpus under tests/ and keeps what it learns in build-fuzz; a crash,
 # hang or sanitizer report fails the run and leaves the reproducer in build-fuzz/<name>-artifacts/.
 #   packaging/run-fuzzers.sh [seconds per target, default $SERVODESK_FUZZ_SECONDS or 30]
 set -euo pipefail
@@ -14,10 +14,12 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DSERVODESK_FUZZ=ON -DSERVODESK_BUILD_TESTS=ON "${launcher[@]}" >/dev/null
 
-# name  corpus directory (under tests/fuzz/corpus)  extra flags
+# name  binary (under build-fuzz)  seed corpus (under tests)  extra flags
 targets=(
-    "bds5_drive_fuzz bds5 -dict=$root/tests/fuzz/bds5.dict -max_len=4096"
-    "host_parsers_fuzz host -max_len=4096"
+    "bds5_drive_fuzz tests/fuzz tests/fuzz/corpus/bds5 -dict=$root/tests/fuzz/bds5.dict -max_len=4096"
+    "host_parsers_fuzz tests/fuzz tests/fuzz/corpus/host -max_len=4096"
+    "pmc960_drive_fuzz tests/fuzz tests/drive_core/pmc960/fuzz_corpus -max_len=4096"
+    "sc750_compiler_fuzz tests/drive_core tests/drive_core/sc750/examples -max_len=8192"
 )
 names=()
 for t in "${targets[@]}"; do names+=("${t%% *}"); done
@@ -25,13 +27,13 @@ cmake --build "$build" -j "$(nproc)" --target "${names[@]}"
 
 status=0
 for t in "${targets[@]}"; do
-    read -r name corpus flags <<<"$t"
+    read -r name dir corpus flags <<<"$t"
     work=$build/$name-corpus
     artifacts=$build/$name-artifacts/
     mkdir -p "$work" "$artifacts"
     log=$build/$name.log
     # shellcheck disable=SC2086
-    if "$build/tests/fuzz/$name" "$work" "$root/tests/fuzz/corpus/$corpus" $flags -timeout=10 \
+    if "$build/$dir/$name" "$work" "$root/$corpus" $flags -timeout=10 \
         -rss_limit_mb=2048 -max_total_time="$seconds" -artifact_prefix="$artifacts" -print_final_stats=1 \
         >"$log" 2>&1; then
         runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
