@@ -26,7 +26,11 @@ std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
     const QCommandLineOption baud(
         QStringLiteral("baud"), QCoreApplication::translate("app", "Baud rate, 300 to 19200 (default 9600)."),
         QStringLiteral("rate"), QStringLiteral("9600"));
-    parser.addOptions({tour, port, baud});
+    const QCommandLineOption drive(
+        QStringLiteral("drive"),
+        QCoreApplication::translate("app", "The drive family: bds5 (default), sc750 or pmc960."),
+        QStringLiteral("family"), QStringLiteral("bds5"));
+    parser.addOptions({tour, port, baud, drive});
     parser.process(arguments);
 
     LaunchOptions options;
@@ -38,6 +42,12 @@ std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
         return std::nullopt;
     }
     options.connection.baudRate = rate;
+    const auto family = ConnectionChoice::familyFromKey(parser.value(drive));
+    if (!family) {
+        QTextStream(stderr) << "servodesk: --drive must be bds5, sc750 or pmc960\n";
+        return std::nullopt;
+    }
+    options.connection.family = *family;
     if (parser.isSet(port)) {
         options.connection.kind = ConnectionChoice::Kind::SerialPort;
         options.connection.portName = parser.value(port);

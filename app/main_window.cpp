@@ -7,6 +7,7 @@
 #include "debug_highlighter.h"
 #include "document_controller.h"
 #include "editor_area.h"
+#include "family_workspace.h"
 #include "drive_actions.h"
 #include "drive_connection.h"
 #include "help_browser.h"
@@ -38,6 +39,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
 
 namespace app {
 
@@ -91,6 +93,20 @@ TerminalWidget* MainWindow::terminal() const {
 }
 
 void MainWindow::connectDrive(const ConnectionChoice& choice) {
+    FamilyWorkspace* next = workspace(choice.family);
+    if (choice.family != drive_core::DriveFamily::Bds5 && !next) {
+        showLinkError(tr("This build of ServoDesk has no %1 support.").arg(ConnectionChoice::familyName(choice.family)));
+        return;
+    }
+    for (FamilyWorkspace* w : m_workspaces)
+        if (w != next) w->deactivate();
+    showFamily(choice.family);
+    if (next) {
+        m_connection->disconnectDrive(); // one family on the port at a time
+        next->activate(choice);
+        updateLinkStatus();
+        return;
+    }
     m_connection->connectTo(choice);
     if (m_connection->isConnected())
         terminal()->displayNotice(tr("Connected to %1").arg(m_connection->linkDescription()));
@@ -102,6 +118,61 @@ ConnectionDialog* MainWindow::showConnectionDialog() {
     connect(dialog, &QDialog::accepted, this, [this, dialog] { connectDrive(dialog->choice()); });
     dialog->open();
     return dialog;
+}
+
+void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
+    workspace->setParent(this);
+    m_workspaces.append(workspace);
+    for (QMenu* menu : workspace->menus()) {
+        menuBar()->insertMenu(m_driveMenu->menuAction(), menu);
+        menu->menuAction()->setVisible(false);
+    }
+    for (QDockWidget* dock : workspace->docks()) {
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        dock->hide();
+        m_viewMenu->addAction(dock->toggleViewAction());
+    }
+    connect(workspace, &FamilyWorkspace::statusChanged, this, &MainWindow::updateLinkStatus);
+    connect(workspace, &FamilyWorkspace::message, this, &MainWindow::showLinkError);
+    showFamily(m_family);
+}
+
+FamilyWorkspace* MainWindow::workspace(drive_core::DriveFamily family) const {
+    for (FamilyWorkspace* w : m_workspaces)
+        if (w->family() == family) return w;
+    return nullptr;
+}
+
+void MainWindow::showFamily(drive_core::DriveFamily family) {
+    const bool bds5 = family == drive_core::DriveFamily::Bds5;
+    for (QAction* action : m_bds5Only) action->setVisible(bds5);
+    for (FamilyWorkspace* w : m_workspaces) {
+        const bool active = w->family() == family;
+        for (QMenu* menu : w->menus()) menu->menuAction()->setVisible(active);
+        for (QDockWidget* dock : w->docks()) {
+            dock->toggleViewAction()->setVisible(active);
+            if (!active) dock->hide();
+        }
+    }
+    if (bds5) {
+        for (QDockWidget* dock : {m_scopeController->scopeDock(), m_scopeController->tuningDock()})
+            dock->toggleViewAction()->setVisible(true);
+    } else {
+        // The BDS5's own docks would talk to a session that is not there.
+        for (QDockWidget* dock : std::initializer_list<QDockWidget*>{
+                 m_scopeController->scopeDock(), m_scopeController->tuningDock(), m_variablesDock, m_ioPanel,
+                 m_dep01Panel, m_captureDock})
+            dock->hide();
+    }
+    if (m_family == family) return;
+    m_family = family;
+    emit familyChanged(family);
+}
+
+void MainWindow::disconnectActive() {
+    if (FamilyWorkspace* w = workspace(m_family)) w->deactivate();
+    else m_connection->disconnectDrive();
+    updateLinkStatus();
 }
 
 void MainWindow::restoreLayout() {
@@ -120,22 +191,24 @@ void MainWindow::createMenus() {
     m_editorArea->fillSearchMenu(search);
     search->addAction(m_outlineDock->goToLabelAction());
     m_programController = new ProgramController(*this);
-    menuBar()->addMenu(m_programController->menu());
+    m_bds5Only << menuBar()->addMenu(m_programController->menu());
     m_variablesController = new VariablesController(*this);
-    menuBar()->addMenu(m_variablesController->menu());
+    m_bds5Only << menuBar()->addMenu(m_variablesController->menu());
     m_scopeController = new ScopeController(*this); // Scope menu; scope and tuning docks, hidden until used
-    menuBar()->addMenu(m_scopeController->menu());
+    m_bds5Only << menuBar()->addMenu(m_scopeController->menu());
     for (QDockWidget* dock : {m_scopeController->scopeDock(), m_scopeController->tuningDock()}) {
         addDockWidget(Qt::BottomDockWidgetArea, dock);
         dock->hide(); // tabbed with the terminal when first shown (ScopeController)
     }
 
-    QMenu* drive = menuBar()->addMenu(tr("&Drive"));
+    QMenu* drive = m_driveMenu = menuBar()->addMenu(tr("&Drive"));
     drive->addAction(tr("&Connect..."), QKeySequence(tr("Ctrl+K")), this, &MainWindow::showConnectionDialog);
-    m_disconnectAction = drive->addAction(tr("&Disconnect"), m_connection, &DriveConnection::disconnectDrive);
+    m_disconnectAction = drive->addAction(tr("&Disconnect"), this, &MainWindow::disconnectActive);
+    const qsizetype common = drive->actions().size();
     m_driveActions->addToMenu(drive);
+    m_bds5Only << drive->actions().mid(common);
 
-    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* toggleTerminal = m_terminalDock->toggleViewAction();
     toggleTerminal->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
     view->addAction(toggleTerminal);
@@ -145,10 +218,15 @@ void MainWindow::createMenus() {
     for (QDockWidget* dock :
          std::initializer_list<QDockWidget*>{m_variablesDock, m_errorLogDock, m_ioPanel, m_dep01Panel})
         view->addAction(dock->toggleViewAction());
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_variablesDock, m_ioPanel, m_dep01Panel})
+        m_bds5Only << dock->toggleViewAction();
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    m_bds5Only << tools->menuAction();
     tools->addAction(tr("&Setup Wizard..."), this, [this] { SetupWizard::openFor(*m_connection, this); });
 
-    m_captureDock->addToMenu(menuBar()->addMenu(tr("&Capture")));
+    QMenu* capture = menuBar()->addMenu(tr("&Capture"));
+    m_captureDock->addToMenu(capture);
+    m_bds5Only << capture->menuAction() << m_captureDock->toggleViewAction();
     m_optionsController->addToMenu(menuBar()->addMenu(tr("&Options")));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -161,8 +239,10 @@ void MainWindow::createMenus() {
 
 void MainWindow::createDriveTools() {
     m_driveActions = new DriveActions(*this);
-    addToolBar(m_driveActions->createDriveToolBar());
-    addToolBar(m_driveActions->createDebugToolBar());
+    for (QToolBar* bar : {m_driveActions->createDriveToolBar(), m_driveActions->createDebugToolBar()}) {
+        addToolBar(bar);
+        m_bds5Only << bar->toggleViewAction();
+    }
     m_debugHighlighter = new DebugHighlighter(*this, this);
     m_captureLog = new CaptureLog(this);
     connect(m_connection, &DriveConnection::rawReceived, m_captureLog, &CaptureLog::addReceived);
@@ -251,6 +331,18 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::updateLinkStatus() {
+    if (FamilyWorkspace* w = workspace(m_family)) {
+        m_linkLabel->setText(w->statusText());
+        m_portLabel->parentWidget()->setVisible(false);
+        m_modeLabel->parentWidget()->setVisible(false);
+        m_disconnectAction->setEnabled(w->isConnected());
+        const bool on = w->isConnected();
+        m_stateLabel->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
+                                  .arg(on ? QStringLiteral("#1e8e3e") : QStringLiteral("#b3261e"),
+                                       on ? tr("Connected") : tr("Disconnected")));
+        return;
+    }
+    m_modeLabel->parentWidget()->setVisible(true);
     const bool hasLink = m_connection->hasLink();
     m_linkLabel->setText(hasLink ? m_connection->linkDescription() : tr("No drive"));
     // A serial link's description already names its port and rate ("/dev/ttyUSB0 9600 8N1").
@@ -267,6 +359,7 @@ void MainWindow::showMode(serialport::Bds5Mode mode, const QString& prompt) {
 }
 
 void MainWindow::showState() {
+    if (workspace(m_family)) return; // the workspace's own status (updateLinkStatus)
     using State = serialport::Bds5Session::State;
     QString text = tr("Disconnected");
     QString colour = QStringLiteral("#b3261e");

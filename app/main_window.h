@@ -8,6 +8,8 @@
 
 #include <QMainWindow>
 
+class QMenu;
+
 class QLabel;
 
 namespace editor {
@@ -24,6 +26,7 @@ class ConnectionDialog;
 class DebugHighlighter;
 class DocumentController;
 class EditorArea;
+class FamilyWorkspace;
 class DriveActions;
 class DriveConnection;
 class HelpBrowser;
@@ -44,7 +47,8 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Replaces the current connection (if any) with a new one and opens it.
+    // Replaces the current connection (if any) with a new one and opens it. A choice of another family
+    // than the BDS5 goes to that family's workspace, whose menus and docks then replace the BDS5's.
     void connectDrive(const ConnectionChoice& choice);
     // Drive > Connect...: shows the dialog without blocking and returns it (the tour grabs it).
     ConnectionDialog* showConnectionDialog();
@@ -77,9 +81,15 @@ public:
     ErrorLogDock* errorLogDock() const { return m_errorLogDock; }
     IoPanel* ioPanel() const { return m_ioPanel; }
     Dep01Panel* dep01Panel() const { return m_dep01Panel; }
+    // Issues 8 and 9: the SC750 and PMC-960 workspaces. The window takes ownership; menus and docks are
+    // added hidden and shown while the workspace's family is the connected one.
+    void addWorkspace(FamilyWorkspace* workspace);
+    FamilyWorkspace* workspace(drive_core::DriveFamily family) const;
+    drive_core::DriveFamily activeFamily() const { return m_family; }
 
 signals:
     void currentEditorChanged(editor::ProgramEditor* editor);
+    void familyChanged(drive_core::DriveFamily family);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -97,6 +107,8 @@ private:
     void showState();
     void showLinkError(const QString& message);
     void showAbout();
+    void showFamily(drive_core::DriveFamily family); // menus, toolbars and docks of that family only
+    void disconnectActive();
 
     EditorArea* m_editorArea;
     TerminalDock* m_terminalDock;
@@ -122,6 +134,11 @@ private:
     QLabel* m_modeLabel = nullptr;
     QLabel* m_stateLabel = nullptr;
     QAction* m_disconnectAction = nullptr;
+    QMenu* m_driveMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QList<QAction*> m_bds5Only; // menus, toolbars and Drive-menu actions that act on the BDS5 session
+    QList<FamilyWorkspace*> m_workspaces;
+    drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
     bool m_closeConfirmed = false;
     bool m_layoutRestored = false;
     bool m_shownOnce = false;

@@ -17,6 +17,7 @@ ConnectionChoice ConnectionChoice::load(QSettings& settings) {
     choice.portName = settings.value(QStringLiteral("port")).toString();
     const int baud = settings.value(QStringLiteral("baud"), choice.baudRate).toInt();
     if (baudRates().contains(baud)) choice.baudRate = baud;
+    choice.family = familyFromKey(settings.value(QStringLiteral("family")).toString()).value_or(choice.family);
     settings.endGroup();
     if (choice.kind == Kind::SerialPort && choice.portName.isEmpty()) choice.kind = Kind::Simulator;
     return choice;
@@ -29,13 +30,14 @@ void ConnectionChoice::save(QSettings& settings) const {
     // Keep the last port even while the simulator is chosen, so the dialog can offer it again.
     if (!portName.isEmpty()) settings.setValue(QStringLiteral("port"), portName);
     settings.setValue(QStringLiteral("baud"), baudRate);
+    settings.setValue(QStringLiteral("family"), familyKey(family));
     settings.endGroup();
 }
 
 std::unique_ptr<serialport::Link> ConnectionChoice::makeLink() const {
     if (kind == Kind::SerialPort) return std::make_unique<serialport::SerialPortLink>(portName, baudRate);
     return std::make_unique<serialport::SimulatorLink>(
-        drive_core::DriveFamily::Bds5, serialport::SimulatorLink::Options{.baudRate = baudRate});
+        family, serialport::SimulatorLink::Options{.baudRate = baudRate});
 }
 
 QString ConnectionChoice::portText() const {
@@ -43,7 +45,33 @@ QString ConnectionChoice::portText() const {
         return QCoreApplication::translate("app::ConnectionChoice", "%1, %2 baud")
             .arg(portName)
             .arg(baudRate);
-    return QCoreApplication::translate("app::ConnectionChoice", "In-process, %1 baud").arg(baudRate);
+    return QCoreApplication::translate("app::ConnectionChoice", "Simulated %1, %2 baud")
+        .arg(familyName(family))
+        .arg(baudRate);
+}
+
+QString ConnectionChoice::familyName(drive_core::DriveFamily family) {
+    switch (family) {
+    case drive_core::DriveFamily::Bds5: return QStringLiteral("BDS5");
+    case drive_core::DriveFamily::Sc750: return QStringLiteral("SC750");
+    case drive_core::DriveFamily::Pmc960: return QStringLiteral("PMC-960");
+    }
+    return {};
+}
+
+QString ConnectionChoice::familyKey(drive_core::DriveFamily family) {
+    switch (family) {
+    case drive_core::DriveFamily::Bds5: return QStringLiteral("bds5");
+    case drive_core::DriveFamily::Sc750: return QStringLiteral("sc750");
+    case drive_core::DriveFamily::Pmc960: return QStringLiteral("pmc960");
+    }
+    return {};
+}
+
+std::optional<drive_core::DriveFamily> ConnectionChoice::familyFromKey(const QString& key) {
+    for (const auto f : {drive_core::DriveFamily::Bds5, drive_core::DriveFamily::Sc750, drive_core::DriveFamily::Pmc960})
+        if (key.compare(familyKey(f), Qt::CaseInsensitive) == 0) return f;
+    return std::nullopt;
 }
 
 } // namespace app

@@ -18,7 +18,8 @@
 namespace app {
 
 ConnectionDialog::ConnectionDialog(QWidget* parent)
-    : QDialog(parent), m_simulator(new QRadioButton(tr("Simulated BDS5"), this)),
+    : QDialog(parent), m_family(new QComboBox(this)), m_simulatorNote(new QLabel(this)),
+      m_simulator(new QRadioButton(tr("Simulated drive"), this)),
       m_serial(new QRadioButton(tr("Serial port"), this)), m_port(new QComboBox(this)),
       m_refresh(new QPushButton(tr("Refresh"), this)), m_baud(new QComboBox(this)),
       m_portHint(new QLabel(this)) {
@@ -28,9 +29,12 @@ ConnectionDialog::ConnectionDialog(QWidget* parent)
     auto* group = new QButtonGroup(this);
     group->addButton(m_simulator);
     group->addButton(m_serial);
-    auto* simulatorNote = new QLabel(tr("A BDS5 simulated inside ServoDesk. No hardware needed."), this);
-    simulatorNote->setIndent(24);
-    simulatorNote->setEnabled(false);
+    m_family->setObjectName(QStringLiteral("familyCombo"));
+    m_family->addItem(tr("Kollmorgen BDS5 (Motion Link)"), int(drive_core::DriveFamily::Bds5));
+    m_family->addItem(tr("Pacific Scientific SC750 (Motion Dialogue)"), int(drive_core::DriveFamily::Sc750));
+    m_family->addItem(tr("Ormec PMC-960 (MPL)"), int(drive_core::DriveFamily::Pmc960));
+    m_simulatorNote->setIndent(24);
+    m_simulatorNote->setEnabled(false);
 
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
@@ -58,8 +62,12 @@ ConnectionDialog::ConnectionDialog(QWidget* parent)
 
     auto* driveBox = new QGroupBox(tr("Drive"), this);
     auto* driveLayout = new QVBoxLayout(driveBox);
+    auto* familyForm = new QFormLayout;
+    familyForm->addRow(tr("Family:"), m_family);
+    driveLayout->addLayout(familyForm);
+    driveLayout->addSpacing(6);
     driveLayout->addWidget(m_simulator);
-    driveLayout->addWidget(simulatorNote);
+    driveLayout->addWidget(m_simulatorNote);
     driveLayout->addSpacing(6);
     driveLayout->addWidget(m_serial);
     driveLayout->addLayout(serialForm);
@@ -78,6 +86,7 @@ ConnectionDialog::ConnectionDialog(QWidget* parent)
     connect(buttons, &QDialogButtonBox::rejected, this, &ConnectionDialog::reject);
     connect(m_refresh, &QPushButton::clicked, this, &ConnectionDialog::refreshPorts);
     connect(m_serial, &QRadioButton::toggled, this, &ConnectionDialog::updateEnabled);
+    connect(m_family, &QComboBox::currentIndexChanged, this, &ConnectionDialog::updateEnabled);
 
     refreshPorts();
     QSettings settings;
@@ -89,11 +98,13 @@ ConnectionChoice ConnectionDialog::choice() const {
     c.kind = m_serial->isChecked() ? ConnectionChoice::Kind::SerialPort : ConnectionChoice::Kind::Simulator;
     c.portName = m_port->currentText().trimmed();
     c.baudRate = m_baud->currentData().toInt();
+    c.family = drive_core::DriveFamily(m_family->currentData().toInt());
     return c;
 }
 
 void ConnectionDialog::setChoice(const ConnectionChoice& choice) {
     (choice.kind == ConnectionChoice::Kind::SerialPort ? m_serial : m_simulator)->setChecked(true);
+    m_family->setCurrentIndex(std::max(0, m_family->findData(int(choice.family))));
     if (!choice.portName.isEmpty()) m_port->setCurrentText(choice.portName);
     const int baudIndex = m_baud->findData(choice.baudRate);
     m_baud->setCurrentIndex(baudIndex >= 0 ? baudIndex : m_baud->findData(9600));
@@ -126,6 +137,9 @@ void ConnectionDialog::updateEnabled() {
     const bool serial = m_serial->isChecked();
     m_port->setEnabled(serial);
     m_refresh->setEnabled(serial);
+    const auto family = drive_core::DriveFamily(m_family->currentData().toInt());
+    m_simulatorNote->setText(tr("A %1 simulated inside ServoDesk. No hardware needed.")
+                                 .arg(ConnectionChoice::familyName(family)));
 }
 
 } // namespace app

@@ -1,5 +1,6 @@
-// ConnectionDialog: choose the drive to talk to — the simulated BDS5 (default) or a serial port from the
-// system's list or typed in (ptys such as /dev/pts/5) — and its baud rate. Starts from, and on OK stores,
+// ConnectionDialog: choose the drive to talk to — its family (BDS5 by default, SC750, PMC-960), then the
+// simulated drive of that family or a serial port from the system's list or typed in (ptys such as
+// /dev/pts/5) — and its baud rate. Starts from, and on OK stores,
 // the choice remembered in QSettings. Use open() (non-modal to the event loop) and listen to accepted().
 #pragma once
 
@@ -28,6 +29,8 @@ private:
     void refreshPorts();
     void updateEnabled();
 
+    QComboBox* m_family;
+    QLabel* m_simulatorNote;
     QRadioButton* m_simulator;
     QRadioButton* m_serial;
     QComboBox* m_port;

@@ -1,0 +1,46 @@
+// FamilyWorkspace: everything the IDE offers for one drive family other than the BDS5 (whose tools are
+// the main window's own): its menus, its docks, and its own link and session. The main window shows the
+// workspace of the family chosen in Drive > Connect and hides the rest; a workspace opens its link in
+// activate() and closes it in deactivate(), so only one family talks on a port at a time. GUI thread only.
+//
+//   auto* sc750 = new Sc750Workspace(window);   // parented to the window
+//   window.addWorkspace(sc750);                  // before show(); menus and docks are added hidden
+#pragma once
+
+#include "connection_choice.h"
+
+#include "drive_core/drive.h"
+
+#include <QList>
+#include <QObject>
+
+class QDockWidget;
+class QMenu;
+
+namespace app {
+
+class FamilyWorkspace : public QObject {
+    Q_OBJECT
+public:
+    using QObject::QObject;
+
+    virtual drive_core::DriveFamily family() const = 0;
+    // Menus placed before the Drive menu, and docks, both visible only while the workspace is active.
+    virtual QList<QMenu*> menus() const = 0;
+    virtual QList<QDockWidget*> docks() const = 0;
+    // Connect to the choice's port (or the family's simulated drive); called again to reconnect.
+    virtual void activate(const ConnectionChoice& choice) = 0;
+    // Close the link; the editors keep their contents.
+    virtual void deactivate() = 0;
+    virtual bool isConnected() const = 0;
+    // For the status bar: "SC750 axis 255, Ready" and similar.
+    virtual QString statusText() const = 0;
+
+signals:
+    // statusText() or isConnected() changed.
+    void statusChanged();
+    // A message for the status bar and the terminal ("The controller did not answer...").
+    void message(const QString& text);
+};
+
+} // namespace app
