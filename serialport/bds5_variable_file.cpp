@@ -11,15 +11,19 @@ namespace serialport {
 Bds5VariableFile Bds5VariableFile::parse(const QString& text) {
     // NAME: a letter then letters/digits (VMAX, X12, XS3); value: one entry without blanks (a number, 0FFH,
     // a constant such as ON). Expressions have no blanks either (Table 3.3), so one entry covers them.
+    // Blanks are spaces and tabs only, as for comments (Bds5ProgramText::commentStart): with any other
+    // white space as a separator, "RE\f;;" would read as RE = ";;" here and as a comment once written
+    // back (found by host_parsers_fuzz). For the same reason a value does not begin with ';'.
     static const QRegularExpression kAssignment(
-        QStringLiteral("^\\s*([A-Za-z][A-Za-z0-9]*)(?:\\s*=\\s*|\\s+)([^\\s=]+)\\s*$"));
+        QStringLiteral("^[ \\t]*([A-Za-z][A-Za-z0-9]*)(?:[ \\t]*=[ \\t]*|[ \\t]+)([^ \\t=;][^ \\t=]*)[ \\t]*$"));
     static const QRegularExpression kClearX(QStringLiteral("^\\s*CLEARX\\s*$"),
                                             QRegularExpression::CaseInsensitiveOption);
     Bds5VariableFile out;
-    QStringList lines = text.split(QLatin1Char('\n'));
+    // A CR ends a line for the drive, as LF does (CRLF counts once).
+    static const QRegularExpression kLineEnd(QStringLiteral("\r\n|\r|\n"));
+    const QStringList lines = text.split(kLineEnd);
     for (int i = 0; i < lines.size(); ++i) {
-        QString line = lines[i];
-        if (line.endsWith(QLatin1Char('\r'))) line.chop(1);
+        const QString& line = lines[i];
         if (Bds5ProgramText::isCommentLine(line)) continue;
         const int comment = Bds5ProgramText::commentStart(line);
         const QString code = comment < 0 ? line : line.left(comment);

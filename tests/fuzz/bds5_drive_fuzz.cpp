@@ -36,7 +36,8 @@ using drive_core::bds5::Bds5DriveMode;
 using namespace std::chrono_literals;
 
 constexpr std::size_t kMaxFlood = std::size_t(1) << 14;
-constexpr Microseconds kExtraRun = 10s; // more program time for the outrun check
+constexpr Microseconds kExtraRun = 5s; // more program time for the outrun check (5 s of servo ticks
+                                        // keep the fuzzer at a useful pace now the drive has physics)
 constexpr Microseconds kExtraStep = 100ms;
 // BDS5_FUZZ_TRACE=1 copies what the drive sends to stderr, to read a reproducer's session.
 const bool kTrace = std::getenv("BDS5_FUZZ_TRACE") != nullptr;
