@@ -1,0 +1,155 @@
+// Choosing the drive family: the main window hands a non-BDS5 choice to that family's workspace, which
+// reaches the family's simulated drive over its own link (a PMC-960 answers a CR with its "}" prompt),
+// shows its menus instead of the BDS5's, and gives the port back when the user returns to the BDS5. The
+// choice survives in the settings and on the command line.
+#include "app/command_line.h"
+#include "app/drive/connection_choice.h"
+#include "app/drive/connection_dialog.h"
+#include "app/drive/drive_connection.h"
+#include "app/drive/family_workspace.h"
+#include "app/main_window.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTest>
+
+#include <optional>
+
+using app::ConnectionChoice;
+using drive_core::DriveFamily;
+
+namespace {
+constexpr int kTimeoutMs = 10000;
+
+// The smallest workspace: opens the choice's link and keeps what the drive sends.
+class ProbeWorkspace final : public app::FamilyWorkspace {
+public:
+    explicit ProbeWorkspace(QWidget* window) : m_menu(new QMenu(QStringLiteral("&Probe"), window)) {}
+
+    DriveFamily family() const override { return DriveFamily::Pmc960; }
+    QList<QMenu*> menus() const override { return {m_menu}; }
+    QList<QDockWidget*> docks() const override { return {}; }
+    void activate(const ConnectionChoice& choice) override {
+        ++activations;
+        m_link = choice.makeLink();
+        connect(m_link.get(), &serialport::Link::bytesReceived, this, [this](const QByteArray& b) { received += b; });
+        connect(m_link.get(), &serialport::Link::opened, this, &FamilyWorkspace::statusChanged);
+        m_link->open();
+    }
+    void deactivate() override {
+        if (m_link) m_link->close();
+        m_link.reset();
+        emit statusChanged();
+    }
+    bool isConnected() const override { return m_link && m_link->isOpen(); }
+    QString statusText() const override { return isConnected() ? QStringLiteral("Probe on PMC-960") : QStringLiteral("Probe idle"); }
+    void write(const QByteArray& bytes) { m_link->write(bytes); }
+
+    QByteArray received;
+    int activations = 0;
+
+private:
+    QMenu* m_menu;
+    std::unique_ptr<serialport::Link> m_link;
+};
+
+// Whether the menu bar shows the menu; no value when there is no such menu at all.
+std::optional<bool> menuVisible(const app::MainWindow& window, const QString& title) {
+    for (QAction* action : window.menuBar()->actions())
+        if (action->text() == title) return action->isVisible();
+    return std::nullopt;
+}
+
+QString labelText(const app::MainWindow& window, const char* name) {
+    const auto* label = window.statusBar()->findChild<QLabel*>(QLatin1String(name));
+    return label ? label->text() : QString();
+}
+
+bool bds5Ready(const app::MainWindow& window) {
+    const auto* session = window.connection().session();
+    return session && session->state() == serialport::Bds5Session::State::Ready;
+}
+} // namespace
+
+class FamilySwitchTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskFamilyTest"));
+    }
+
+    void aFamilyGetsItsWorkspaceAndTheBds5ComesBack() {
+        app::MainWindow window;
+        auto* probe = new ProbeWorkspace(&window);
+        window.addWorkspace(probe);
+        window.connectDrive(ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(bds5Ready(window), kTimeoutMs);
+        QCOMPARE(menuVisible(window, QStringLiteral("&Program")), true);
+        QCOMPARE(menuVisible(window, QStringLiteral("&Probe")), false);
+
+        window.connectDrive(ConnectionChoice::simulator(DriveFamily::Pmc960));
+        QCOMPARE(window.activeFamily(), DriveFamily::Pmc960);
+        QCOMPARE(probe->activations, 1);
+        QCOMPARE(menuVisible(window, QStringLiteral("&Probe")), true);
+        QCOMPARE(menuVisible(window, QStringLiteral("&Program")), false);
+        QCOMPARE(menuVisible(window, QStringLiteral("S&cope")), false);
+        QVERIFY2(!window.connection().isConnected(), "one family on the port at a time");
+        QTRY_VERIFY_WITH_TIMEOUT(probe->isConnected(), kTimeoutMs);
+        probe->write("\r");
+        QTRY_VERIFY2_WITH_TIMEOUT(probe->received.contains('}'), probe->received.constData(), kTimeoutMs);
+        QTRY_COMPARE(labelText(window, "linkLabel"), QStringLiteral("Probe on PMC-960"));
+
+        window.connectDrive(ConnectionChoice::simulator());
+        QCOMPARE(window.activeFamily(), DriveFamily::Bds5);
+        QVERIFY(!probe->isConnected());
+        QCOMPARE(menuVisible(window, QStringLiteral("&Program")), true);
+        QCOMPARE(menuVisible(window, QStringLiteral("&Probe")), false);
+        QTRY_VERIFY_WITH_TIMEOUT(bds5Ready(window), kTimeoutMs);
+    }
+
+    void aFamilyWithoutAWorkspaceIsRefusedClearly() {
+        app::MainWindow window;
+        window.connectDrive(ConnectionChoice::simulator(DriveFamily::Sc750));
+        if (window.workspace(DriveFamily::Sc750)) QSKIP("this build has an SC750 workspace");
+        QCOMPARE(window.activeFamily(), DriveFamily::Bds5);
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("SC750")));
+    }
+
+    void theFamilyIsRememberedAndChosenInTheDialog() {
+        QSettings settings;
+        ConnectionChoice chosen = ConnectionChoice::serialPort(QStringLiteral("/dev/ttyUSB0"), 9600);
+        chosen.family = DriveFamily::Sc750;
+        chosen.save(settings);
+        QCOMPARE(ConnectionChoice::load(settings), chosen);
+        settings.setValue(QStringLiteral("connection/family"), QStringLiteral("no such drive"));
+        QCOMPARE(ConnectionChoice::load(settings).family, DriveFamily::Bds5);
+
+        app::ConnectionDialog dialog;
+        dialog.setChoice(ConnectionChoice::simulator(DriveFamily::Pmc960));
+        auto* combo = dialog.findChild<QComboBox*>(QStringLiteral("familyCombo"));
+        QVERIFY(combo);
+        QVERIFY(combo->currentText().contains(QStringLiteral("PMC-960")));
+        combo->setCurrentIndex(combo->findData(int(DriveFamily::Sc750)));
+        QCOMPARE(dialog.choice().family, DriveFamily::Sc750);
+    }
+
+    void theCommandLineChoosesTheFamily() {
+        const auto options = app::parseCommandLine({QStringLiteral("servodesk"), QStringLiteral("--drive"),
+                                                    QStringLiteral("pmc960")});
+        QVERIFY(options);
+        QCOMPARE(options->connection.family, DriveFamily::Pmc960);
+        QVERIFY(!app::parseCommandLine({QStringLiteral("servodesk"), QStringLiteral("--drive"),
+                                        QStringLiteral("bds6")}));
+    }
+};
+
+QTEST_MAIN(FamilySwitchTest)
+#include "family_switch_test.moc"
