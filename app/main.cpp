@@ -8,6 +8,7 @@
 
 #include <QApplication>
 #include <QIcon>
+#include <QTemporaryDir>
 
 int main(int argc, char** argv) {
     QApplication application(argc, argv);
@@ -19,6 +20,13 @@ int main(int argc, char** argv) {
 
     const auto options = app::parseCommandLine(QCoreApplication::arguments());
     if (!options) return 2;
+
+    // The tour starts from a clean slate: settings, recovery files and caches in a directory of its own,
+    // so neither the user's last session nor an earlier tour shows up in the shots (or is changed by them).
+    QTemporaryDir tourHome;
+    if (!options->screenshotTourDir.isEmpty() && tourHome.isValid())
+        for (const char* name : {"XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"})
+            qputenv(name, tourHome.filePath(QString::fromLatin1(name)).toLocal8Bit());
 
     app::MainWindow window;
     if (options->screenshotTourDir.isEmpty()) {

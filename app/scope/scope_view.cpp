@@ -28,6 +28,7 @@ ScopeView::ScopeView(QWidget* parent)
     split->addWidget(m_measurements);
     split->setStretchFactor(0, 4);
     split->setStretchFactor(1, 1);
+    split->setSizes({800, 200}); // the plot first: the table's size hint would otherwise take half
     layout->addWidget(split, 1);
 
     QAction* fit = m_toolBar->addAction(tr("Auto-scale"), m_plot, &scope::ScopePlot::autoScale);
