@@ -35,7 +35,7 @@ int usage(int code) {
                  "                    input N on|off   enable on|off   motion on|off   home on|off\n"
                  "                    home-at REV   limits on|off on|off (positive, negative)\n"
                  "                    load-torque NM   load-inertia KGM2   master-hz HZ   motor NAME\n"
-                 "                    power-cycle   status\n"
+                 "                    feedback on|off   power-cycle   status\n"
                  "                  With --pty, \"CONTROL PATH\" is printed after the PTY line.\n");
     return code;
 }
