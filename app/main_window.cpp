@@ -304,7 +304,7 @@ void MainWindow::wireConnection() {
     TerminalWidget* term = terminal();
     connect(term, &TerminalWidget::bytesTyped, m_connection, &DriveConnection::sendRaw);
     connect(term, &TerminalWidget::urgentBytesTyped, m_connection, &DriveConnection::sendUrgent);
-    connect(m_connection, &DriveConnection::rawReceived, term, &TerminalWidget::displayBytes);
+    connect(m_connection, &DriveConnection::shownReceived, term, &TerminalWidget::displayBytes);
     connect(m_connection, &DriveConnection::modeChanged, this, &MainWindow::showMode);
     connect(m_connection, &DriveConnection::linkChanged, this, &MainWindow::updateLinkStatus);
     connect(m_connection, &DriveConnection::connectedChanged, this, &MainWindow::updateLinkStatus);

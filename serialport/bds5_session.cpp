@@ -40,9 +40,9 @@ Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(
     if (m_link.isOpen()) onLinkOpened();
 }
 
-quint64 Bds5Session::send(const QString& line) {
+quint64 Bds5Session::send(const QString& line, Echo echo) {
     const quint64 id = m_nextId++;
-    m_queue.push_back(Pending{id, line});
+    m_queue.push_back(Pending{id, line, 1, {}, echo == Echo::Quiet});
     pump();
     return id;
 }
@@ -113,6 +113,7 @@ void Bds5Session::onLinkClosed() {
 
 void Bds5Session::onBytes(const QByteArray& bytes) {
     emit rawReceived(bytes);
+    if (!m_current || !m_current->quiet) emit shownReceived(bytes);
     const QString text = QString::fromLatin1(bytes);
     m_tail = (m_tail + text).right(kTailKeep);
     if (m_current) {

@@ -32,11 +32,14 @@ class Bds5Session final : public QObject {
     Q_OBJECT
 public:
     enum class State { Closed, WaitingForPrompt, Ready, Busy };
+    // Whether a command and its answer appear in the terminal (shownReceived). Background polls (the
+    // variable browser, the I/O panel) are quiet, so the terminal shows only what the user did.
+    enum class Echo { Shown, Quiet };
 
     explicit Bds5Session(Link& link, QObject* parent = nullptr);
 
     // Queues one instruction (without CR). Returns an id that finished()/failed() carry.
-    quint64 send(const QString& line);
+    quint64 send(const QString& line, Echo echo = Echo::Shown);
     // Queues an Esc (no CR): leaves program-load mode (>BDS) at the next prompt; finished() carries the
     // prompt that follows (-->). Used by transfers to end a download.
     quint64 sendEscape();
@@ -54,7 +57,8 @@ public:
     Link& link() { return m_link; }
 
 signals:
-    void rawReceived(const QByteArray& bytes); // every byte from the drive, for the terminal and captures
+    void rawReceived(const QByteArray& bytes);   // every byte from the drive, for captures and watchers
+    void shownReceived(const QByteArray& bytes); // the same, less the echo and answer of quiet commands
     void rawSent(const QByteArray& bytes);     // every byte written to the drive, as written (captures)
     void modeChanged(serialport::Bds5Mode mode, const QString& prompt);
     void stateChanged(serialport::Bds5Session::State state);
@@ -67,6 +71,7 @@ private:
         QString line;
         int retries = 1;
         QByteArray bytes; // written instead of line + CR when not empty (Esc)
+        bool quiet = false;
     };
 
     void onBytes(const QByteArray& bytes);

@@ -35,6 +35,7 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
         if (!m_reconnect.isActive()) emit errorOccurred(message); // not once a second while it is away
     });
     connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
+    connect(m_session.get(), &serialport::Bds5Session::shownReceived, this, &DriveConnection::shownReceived);
     connect(m_session.get(), &serialport::Bds5Session::rawSent, this, &DriveConnection::rawSent);
     connect(m_session.get(), &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
     connect(m_session.get(), &serialport::Bds5Session::stateChanged, this,

@@ -46,6 +46,7 @@ signals:
     void linkChanged(); // a new link was made or the link went away: refresh its description
     void connectedChanged(bool connected);
     void rawReceived(const QByteArray& bytes);
+    void shownReceived(const QByteArray& bytes); // for the terminal: without quiet polls (Bds5Session::Echo)
     void rawSent(const QByteArray& bytes);
     void modeChanged(serialport::Bds5Mode mode, const QString& prompt);
     void sessionStateChanged(serialport::Bds5Session::State state);

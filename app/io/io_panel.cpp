@@ -237,7 +237,7 @@ void IoPanel::pollRealDrive() {
     if (m_session->mode() != serialport::Bds5Mode::Interactive ||
         m_session->state() != serialport::Bds5Session::State::Ready)
         return;
-    m_pollId = m_session->send(QStringLiteral("P IN OUT"));
+    m_pollId = m_session->send(QStringLiteral("P IN OUT"), serialport::Bds5Session::Echo::Quiet);
 }
 
 void IoPanel::onFinished(quint64 id, const serialport::Bds5Response& response) {

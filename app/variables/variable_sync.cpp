@@ -94,7 +94,10 @@ void VariableSync::write(const QString& name, const QString& instruction) {
 
 quint64 VariableSync::send(const QString& line, Request request) {
     if (!m_session) return 0;
-    const quint64 id = m_session->send(line);
+    // Polls and read-backs stay out of the terminal; the user's own writes show there.
+    const auto echo = request.kind == Kind::Write ? serialport::Bds5Session::Echo::Shown
+                                                  : serialport::Bds5Session::Echo::Quiet;
+    const quint64 id = m_session->send(line, echo);
     m_requests.insert(id, std::move(request));
     return id;
 }

@@ -3,6 +3,7 @@
 // edit refused before sending, a write the drive itself refuses, live polling of the rows in view, the
 // watch list and "Copy as .VAR".
 #include "app/drive/drive_connection.h"
+#include "app/drive/terminal_widget.h"
 #include "app/main_window.h"
 #include "app/variables/variable_model.h"
 #include "app/variables/variable_sync.h"
@@ -141,6 +142,12 @@ private slots:
         asked = ask(window, QStringLiteral("X1=77"));
         QTRY_VERIFY_WITH_TIMEOUT(asked->done, kDriveTimeoutMs);
         QTRY_COMPARE_WITH_TIMEOUT(dock.model().value(QStringLiteral("X1")), QStringLiteral("77"), kDriveTimeoutMs);
+
+        // The polls stay out of the terminal: it shows the edit the user made, not the browser's reads.
+        const QString terminal = window.terminal()->text();
+        QVERIFY2(terminal.contains(QStringLiteral("X1=1234")), qPrintable(terminal.right(400)));
+        QVERIFY2(!terminal.contains(QStringLiteral("P VMAX")) && !terminal.contains(QStringLiteral("P X1 ")),
+                 qPrintable(terminal.right(400)));
     }
 
     void anOutOfRangeEditIsRefusedWithTheDrivesError() {
