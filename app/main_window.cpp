@@ -22,6 +22,7 @@
 #include "errors/program_line_jump.h"
 #include "io/io_panel.h"
 #include "variables/variables_dock.h"
+#include "sc750/sc750_workspace.h"
 #include "wizard/setup_wizard.h"
 
 #include "editor/diagnostics_status.h"
@@ -61,6 +62,7 @@ MainWindow::MainWindow(QWidget* parent)
     createMenus();
     createStatusBar();
     wireConnection();
+    addWorkspace(new Sc750Workspace(*this)); // issue 8: Motion Dialogue for the SC750
     connect(m_documents, &DocumentController::documentChanged, this, &MainWindow::updateTitle);
     connect(m_documents, &DocumentController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });

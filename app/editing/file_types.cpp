@@ -18,6 +18,7 @@ QString filterFor(FileType type) {
     case FileType::Program: return tr("BDS5 programs (*.bds *.BDS)");
     case FileType::Variables: return tr("Variable sets (*.var *.VAR)");
     case FileType::Capture: return tr("Captured communications (*.cap *.CAP)");
+    case FileType::Sc750Program: return tr("ServoBASIC programs (*.bas *.BAS)");
     case FileType::Other: break;
     }
     return tr("All files (*)");
@@ -29,12 +30,14 @@ FileType fileTypeOf(const QString& path) {
     if (suffix == QLatin1String("bds")) return FileType::Program;
     if (suffix == QLatin1String("var")) return FileType::Variables;
     if (suffix == QLatin1String("cap")) return FileType::Capture;
+    if (suffix == QLatin1String("bas")) return FileType::Sc750Program;
     return FileType::Other;
 }
 
 QString fileTypeIcon(FileType type) {
     switch (type) {
     case FileType::Program: return resources::kProgramFileIcon;
+    case FileType::Sc750Program: return resources::kProgramFileIcon;
     case FileType::Variables: return resources::kVariableFileIcon;
     case FileType::Capture: return resources::kCaptureFileIcon;
     case FileType::Other: break;
@@ -47,6 +50,7 @@ QString fileTypeName(FileType type) {
     case FileType::Program: return tr("BDS5 program");
     case FileType::Variables: return tr("Variable set");
     case FileType::Capture: return tr("Captured communications");
+    case FileType::Sc750Program: return tr("ServoBASIC program");
     case FileType::Other: break;
     }
     return tr("Text file");
@@ -57,6 +61,7 @@ QString defaultSuffix(FileType type) {
     case FileType::Program: return QStringLiteral("bds");
     case FileType::Variables: return QStringLiteral("var");
     case FileType::Capture: return QStringLiteral("cap");
+    case FileType::Sc750Program: return QStringLiteral("bas");
     case FileType::Other: break;
     }
     return QString();
@@ -70,12 +75,12 @@ QString untitledName(FileType type) {
 QString openFilter() {
     return tr("Motion Link files (*.bds *.var *.cap *.BDS *.VAR *.CAP)") + QStringLiteral(";;") +
            filterFor(FileType::Program) + QStringLiteral(";;") + filterFor(FileType::Variables) + QStringLiteral(";;") +
-           filterFor(FileType::Capture) + QStringLiteral(";;") + filterFor(FileType::Other);
+           filterFor(FileType::Capture) + QStringLiteral(";;") + filterFor(FileType::Sc750Program) + QStringLiteral(";;") + filterFor(FileType::Other);
 }
 
 QString saveFilter(FileType type) {
     QStringList filters{filterFor(type)};
-    for (FileType other : {FileType::Program, FileType::Variables, FileType::Capture, FileType::Other})
+    for (FileType other : {FileType::Program, FileType::Variables, FileType::Capture, FileType::Sc750Program, FileType::Other})
         if (other != type) filters << filterFor(other);
     return filters.join(QStringLiteral(";;"));
 }

@@ -6,7 +6,8 @@
 
 namespace app {
 
-enum class FileType { Program, Variables, Capture, Other };
+// Sc750Program: a ServoBASIC Plus program for the SC750 (.bas, issue 8).
+enum class FileType { Program, Variables, Capture, Sc750Program, Other };
 
 // By extension, case-insensitively; anything unknown is Other (still opened as text).
 FileType fileTypeOf(const QString& path);

@@ -12,6 +12,7 @@
 #include "terminal_widget.h"
 #include "transfer_tour_steps.h"
 #include "scope_tour_steps.h"
+#include "sc750_tour_steps.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"
@@ -89,6 +90,7 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     for (Step& step : driveTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : scopeTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : docksTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : sc750TourSteps(m_window)) steps.push_back(std::move(step)); // last: it switches family
     return steps;
 }
 

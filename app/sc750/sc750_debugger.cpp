@@ -1,0 +1,344 @@
+// Sc750Debugger: compile, download with progress, run control, breakpoints and the current-line mark.
+#include "sc750_debugger.h"
+
+#include "sc750_workspace.h"
+
+#include "main_window.h"
+
+#include "editor/program_editor.h"
+#include "serialport/sc750_download.h"
+
+#include <Qsci/qscistyle.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QProgressDialog>
+#include <QSaveFile>
+
+namespace app {
+
+namespace {
+constexpr int kErrorIndicator = 20; // as Bds5Diagnostics: one squiggle for the drive's errors
+constexpr int kErrorLineIndicator = 22; // the whole offending line, drawn over the caret line (a marker is not)
+const char* kPreparedProperty = "sc750Prepared";
+
+// "07 NO STATEMENT ON LINE": the drive refused. A time-out is not a refusal: a program flooding the line
+// with PRINT output can delay the answer past the session's time-out while the drive did set it.
+bool isDriveRefusal(const QString& reason) {
+    return reason.size() >= 2 && reason[0].isDigit() && reason[1].isDigit();
+}
+
+int markerCount(const editor::ProgramEditor& editor, int marker) {
+    int n = 0;
+    for (int line = editor.markerFindNext(0, 1 << marker); line >= 0;
+         line = editor.markerFindNext(line + 1, 1 << marker))
+        ++n;
+    return n;
+}
+} // namespace
+
+Sc750Debugger::Sc750Debugger(Sc750Workspace& workspace) : QObject(&workspace), m_workspace(workspace) {}
+
+QString Sc750Debugger::stateText() const {
+    switch (m_state) {
+    case State::NoProgram: return tr("No program");
+    case State::Downloading: return tr("Downloading");
+    case State::Loaded: return tr("Program loaded");
+    case State::Running: return tr("Running");
+    case State::Stopped: return tr("Stopped");
+    case State::AtBreakpoint: return tr("At breakpoint");
+    case State::Ended: return tr("Program ended");
+    case State::Faulted: return tr("Run-time error (F 4)");
+    }
+    return {};
+}
+
+void Sc750Debugger::prepareEditor(editor::ProgramEditor& editor) {
+    if (editor.property(kPreparedProperty).toBool()) return;
+    editor.setProperty(kPreparedProperty, true);
+    editor.markerDefine(QsciScintilla::Background, kCurrentLineMarker);
+    editor.setMarkerBackgroundColor(QColor(0xff, 0xe0, 0x8a), kCurrentLineMarker);
+    editor.markerDefine(QsciScintilla::RightArrow, kArrowMarker);
+    editor.setMarkerBackgroundColor(QColor(0xd9, 0x8c, 0x00), kArrowMarker);
+    editor.setMarkerForegroundColor(QColor(0x80, 0x50, 0x00), kArrowMarker);
+    editor.markerDefine(QsciScintilla::Circle, kBreakpointMarker);
+    editor.setMarkerBackgroundColor(QColor(0xd1, 0x24, 0x2f), kBreakpointMarker);
+    editor.setMarkerForegroundColor(QColor(0x9f, 0x1c, 0x24), kBreakpointMarker);
+    editor.markerDefine(QsciScintilla::Background, kErrorMarker);
+    editor.setMarkerBackgroundColor(QColor(0xff, 0xd7, 0xd4), kErrorMarker);
+    editor.setMarginType(kMarkerMargin, QsciScintilla::SymbolMargin);
+    editor.setMarginWidth(kMarkerMargin, 18);
+    editor.setMarginMarkerMask(kMarkerMargin,
+                               editor.marginMarkerMask(kMarkerMargin) | (1 << kBreakpointMarker) | (1 << kArrowMarker));
+    editor.setMarginSensitivity(kMarkerMargin, true);
+    editor.indicatorDefine(QsciScintilla::SquiggleLowIndicator, kErrorIndicator);
+    editor.setIndicatorForegroundColor(QColor(0xd1, 0x24, 0x2f), kErrorIndicator);
+    editor.indicatorDefine(QsciScintilla::StraightBoxIndicator, kErrorLineIndicator);
+    editor.setIndicatorForegroundColor(QColor(0xff, 0x5a, 0x4f, 60), kErrorLineIndicator);
+    editor.SendScintilla(QsciScintilla::SCI_INDICSETOUTLINEALPHA, static_cast<unsigned long>(kErrorLineIndicator), 0L);
+    editor.setAnnotationDisplay(QsciScintilla::AnnotationBoxed);
+    connect(&editor, &QsciScintilla::marginClicked, this,
+            [this, e = &editor](int margin, int line, Qt::KeyboardModifiers) {
+                if (margin == kMarkerMargin) toggleBreakpointAt(*e, line);
+            });
+    // The error belongs to the text it was found in: the next edit takes it away.
+    connect(&editor, &QsciScintilla::textChanged, this, [this, e = &editor] {
+        if (!e->annotation(e->markerFindNext(0, 1 << kErrorMarker)).isEmpty()) clearError(*e);
+    });
+}
+
+bool Sc750Debugger::compile() {
+    editor::ProgramEditor& editor = *m_workspace.window().editor();
+    prepareEditor(editor);
+    const QString text = editor.text();
+    m_compiled = drive_core::sc750::compile(text.toStdString());
+    m_compiledText = text;
+    clearError(editor);
+    if (!m_compiled.ok()) {
+        m_lastError = QString::fromStdString(m_compiled.error->text());
+        showError(editor, *m_compiled.error);
+        emit message(tr("Compile error, line %1 col %2: %3")
+                         .arg(m_compiled.error->line)
+                         .arg(m_compiled.error->column)
+                         .arg(QString::fromStdString(m_compiled.error->message)));
+        return false;
+    }
+    m_lastError.clear();
+    QString written;
+    if (const QFileInfo source(editor.filePath()); !editor.filePath().isEmpty()) {
+        // Success writes <basename>.BIN next to the program (L2646).
+        QSaveFile bin(source.dir().filePath(source.completeBaseName() + QStringLiteral(".BIN")));
+        if (bin.open(QIODevice::WriteOnly)) {
+            bin.write(reinterpret_cast<const char*>(m_compiled.bin.data()), qint64(m_compiled.bin.size()));
+            if (bin.commit()) written = tr(", written to %1").arg(QFileInfo(bin.fileName()).fileName());
+        }
+    }
+    emit message(tr("Compiled: %1 bytes of code, %2 bytes of data%3")
+                     .arg(m_compiled.program.codeBytes())
+                     .arg(m_compiled.program.dataBytes())
+                     .arg(written));
+    return true;
+}
+
+void Sc750Debugger::showError(editor::ProgramEditor& editor, const drive_core::sc750::CompileError& error) {
+    const int line = qBound(0, error.line - 1, qMax(0, editor.lines() - 1));
+    const int column = qMax(0, error.column - 1);
+    editor.markerAdd(line, kErrorMarker);
+    editor.annotate(line, tr("Col %1: %2").arg(error.column).arg(QString::fromStdString(error.message)),
+                    QsciStyle(-1, tr("SC750 compile error"), QColor(0x9f, 0x1c, 0x24), QColor(0xff, 0xf0, 0xef),
+                              editor.font(), true));
+    const int start = int(editor.positionFromLineIndex(line, column));
+    const int length = qMax(1, int(error.near.size()));
+    editor.SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, kErrorIndicator);
+    editor.SendScintilla(QsciScintilla::SCI_INDICATORFILLRANGE, start, length);
+    const long lineStart = editor.SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, line);
+    const long lineEnd = editor.SendScintilla(QsciScintilla::SCI_GETLINEENDPOSITION, line);
+    editor.SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, kErrorLineIndicator);
+    editor.SendScintilla(QsciScintilla::SCI_INDICATORFILLRANGE, lineStart, qMax(1L, lineEnd - lineStart));
+    editor.setCursorPosition(line, column);
+    editor.ensureLineVisible(line);
+    editor.setFocus();
+}
+
+void Sc750Debugger::clearError(editor::ProgramEditor& editor) {
+    editor.markerDeleteAll(kErrorMarker);
+    editor.clearAnnotations();
+    for (const int indicator : {kErrorIndicator, kErrorLineIndicator}) {
+        editor.SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, indicator);
+        editor.SendScintilla(QsciScintilla::SCI_INDICATORCLEARRANGE, 0, editor.length());
+    }
+}
+
+void Sc750Debugger::run() {
+    if (!m_workspace.session()) {
+        emit message(tr("Not connected to an SC750: choose Drive > Connect..."));
+        return;
+    }
+    if (m_state == State::Downloading) return;
+    editor::ProgramEditor* editor = m_workspace.window().editor();
+    // Compiles first when never compiled or modified since (L2668-L2686).
+    if (m_compiledText != editor->text() || !m_compiled.ok()) {
+        if (!compile()) return;
+    }
+    if (m_program && m_program != editor) m_program->markerDeleteAll(kCurrentLineMarker);
+    m_program = editor;
+    prepareEditor(*editor);
+    // A running program refuses a download: stop it first (H is answered at any time).
+    if (running() || m_state == State::Stopped || m_state == State::AtBreakpoint) m_workspace.send('H', {}, {});
+    download(m_compiled.bin);
+}
+
+void Sc750Debugger::downloadBin(std::vector<std::uint8_t> bin) {
+    if (!m_workspace.session()) {
+        emit message(tr("Not connected to an SC750: choose Drive > Connect..."));
+        return;
+    }
+    if (m_state == State::Downloading) return;
+    if (running() || m_state == State::Stopped || m_state == State::AtBreakpoint) m_workspace.send('H', {}, {});
+    if (m_program) m_program->markerDeleteAll(kCurrentLineMarker);
+    m_program = nullptr; // no source: no lines to mark
+    download(bin);
+}
+
+void Sc750Debugger::download(const std::vector<std::uint8_t>& bin) {
+    serialport::Sc750Session* session = m_workspace.session();
+    setState(State::Downloading);
+    markLine(0);
+    auto* transfer = new serialport::Sc750Download(*session, bin, session);
+    const int total = int(bin.size());
+    auto* progress = new QProgressDialog(tr("Downloading the program to the SC750..."), tr("Cancel"), 0, total,
+                                         &m_workspace.window());
+    m_progress = progress;
+    progress->setWindowTitle(tr("Run Program"));
+    progress->setAttribute(Qt::WA_DeleteOnClose);
+    progress->setAutoClose(false);
+    progress->setAutoReset(false);
+    progress->setMinimumDuration(0);
+    progress->open();
+    connect(progress, &QProgressDialog::canceled, transfer, &serialport::Sc750Download::cancel);
+    connect(session, &QObject::destroyed, progress, &QWidget::close);
+    connect(transfer, &serialport::Sc750Download::progress, progress, [progress](qint64 sent, qint64 all) {
+        progress->setMaximum(int(all));
+        progress->setValue(int(sent));
+    });
+    connect(transfer, &serialport::Sc750Download::finished, this, [this, transfer](bool ok, const QString& why) {
+        transfer->deleteLater();
+        if (m_progress) m_progress->close();
+        if (!ok) {
+            setState(State::NoProgram);
+            emit message(tr("Download failed: %1").arg(why));
+            return;
+        }
+        setState(State::Loaded);
+        if (m_program) sendBreakpoints();
+        startProgram();
+    });
+    transfer->start();
+}
+
+void Sc750Debugger::startProgram() {
+    m_workspace.send('R', {}, [this](const serialport::Sc750Reply&) {
+        setState(State::Running);
+        markLine(0);
+        emit runStarted();
+    });
+}
+
+void Sc750Debugger::stop() {
+    if (auto* session = m_workspace.session()) session->sendStop(); // Ctrl C: program and motion (L1493)
+}
+
+void Sc750Debugger::continueProgram() {
+    m_workspace.send('C', {}, [this](const serialport::Sc750Reply&) {
+        setState(State::Running);
+        markLine(0);
+    });
+}
+
+void Sc750Debugger::reset() {
+    m_workspace.send('X', {}, [this](const serialport::Sc750Reply&) {
+        setState(m_state == State::NoProgram ? State::NoProgram : State::Loaded);
+        markLine(0);
+    });
+}
+
+void Sc750Debugger::attachSession() {
+    serialport::Sc750Session* session = m_workspace.session();
+    if (!session) {
+        setState(State::NoProgram);
+        return;
+    }
+    connect(session, &serialport::Sc750Session::breakpointHit, this, [this](int line) {
+        setState(State::AtBreakpoint);
+        markLine(line);
+        emit message(tr("Breakpoint at line %1").arg(line));
+    });
+    connect(session, &serialport::Sc750Session::programStopped, this, [this](int line) {
+        if (m_state == State::Downloading) return; // the H sent before a download
+        setState(State::Stopped);
+        markLine(line);
+    });
+    connect(session, &serialport::Sc750Session::programEnded, this, [this](int) {
+        setState(State::Ended);
+        markLine(0);
+    });
+    connect(session, &serialport::Sc750Session::runTimeError, this, [this](int code, int line, const QString& text) {
+        setState(State::Faulted);
+        markLine(line);
+        emit message(tr("Run-time error %1 at line %2: %3").arg(code).arg(line).arg(text));
+    });
+}
+
+void Sc750Debugger::toggleBreakpoint() {
+    editor::ProgramEditor& editor = *m_workspace.window().editor();
+    int line = 0, index = 0;
+    editor.getCursorPosition(&line, &index);
+    toggleBreakpointAt(editor, line);
+}
+
+void Sc750Debugger::toggleBreakpointAt(editor::ProgramEditor& editor, int line) {
+    prepareEditor(editor);
+    const bool onDrive = m_program == &editor && m_state != State::NoProgram && m_state != State::Downloading;
+    if (editor.markersAtLine(line) & (1 << kBreakpointMarker)) {
+        editor.markerDelete(line, kBreakpointMarker);
+        if (onDrive) m_workspace.send('B', QStringLiteral("-%1").arg(line + 1), {}, [](const QString&) {});
+        return;
+    }
+    if (markerCount(editor, kBreakpointMarker) >= kMaxBreakpoints) {
+        emit message(tr("At most %1 breakpoints can be set").arg(kMaxBreakpoints));
+        return;
+    }
+    const int handle = editor.markerAdd(line, kBreakpointMarker);
+    if (!onDrive) return;
+    QPointer<editor::ProgramEditor> guard(&editor);
+    m_workspace.send('B', QStringLiteral("+%1").arg(line + 1), {}, [this, guard, handle, line](const QString& why) {
+        if (guard && isDriveRefusal(why)) guard->markerDeleteHandle(handle);
+        emit message(tr("No breakpoint on line %1: %2").arg(line + 1).arg(why));
+    });
+}
+
+void Sc750Debugger::clearBreakpoints() {
+    if (editor::ProgramEditor* editor = m_workspace.window().editor()) editor->markerDeleteAll(kBreakpointMarker);
+    if (m_program) m_program->markerDeleteAll(kBreakpointMarker);
+    if (m_workspace.session()) m_workspace.send('B', QStringLiteral("*"), {});
+}
+
+QList<int> Sc750Debugger::breakpointLines() const {
+    QList<int> lines;
+    const editor::ProgramEditor* editor = m_program ? m_program.data() : m_workspace.window().editor();
+    for (int line = editor->markerFindNext(0, 1 << kBreakpointMarker); line >= 0;
+         line = editor->markerFindNext(line + 1, 1 << kBreakpointMarker))
+        lines << line + 1;
+    return lines;
+}
+
+void Sc750Debugger::sendBreakpoints() {
+    m_workspace.send('B', QStringLiteral("*"), {});
+    for (int line : breakpointLines()) {
+        m_workspace.send('B', QStringLiteral("+%1").arg(line), {}, [this, line](const QString& why) {
+            if (m_program && isDriveRefusal(why)) m_program->markerDelete(line - 1, kBreakpointMarker);
+            emit message(tr("No breakpoint on line %1: %2").arg(line).arg(why));
+        });
+    }
+}
+
+void Sc750Debugger::markLine(int line) {
+    editor::ProgramEditor* editor = m_program ? m_program.data() : nullptr;
+    m_currentLine = -1;
+    if (!editor) return;
+    editor->markerDeleteAll(kCurrentLineMarker);
+    editor->markerDeleteAll(kArrowMarker);
+    if (line <= 0) return;
+    m_currentLine = line - 1;
+    editor->markerAdd(m_currentLine, kCurrentLineMarker);
+    editor->markerAdd(m_currentLine, kArrowMarker);
+    editor->ensureLineVisible(m_currentLine);
+}
+
+void Sc750Debugger::setState(State state) {
+    if (m_state == state) return;
+    m_state = state;
+    emit stateChanged();
+}
+
+} // namespace app

@@ -1,0 +1,93 @@
+// Sc750Debugger: the Compile menu's work (seed-sc750 §2.9). Compiles the current editor's ServoBASIC (the
+// first error marks its line and column, L2632-L2646), downloads the .BIN with a progress dialog, runs,
+// stops, continues and resets the program, keeps up to 10 breakpoints as editor-margin markers and sends
+// them to the controller, and marks the line where the program stopped. Asynchronous; GUI thread only.
+#pragma once
+
+#include "drive_core/sc750/sc750_compiler.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QString>
+
+class QProgressDialog;
+
+namespace editor {
+class ProgramEditor;
+}
+
+namespace app {
+
+class Sc750Workspace;
+
+class Sc750Debugger final : public QObject {
+    Q_OBJECT
+public:
+    enum class State { NoProgram, Downloading, Loaded, Running, Stopped, AtBreakpoint, Ended, Faulted };
+
+    // Editor marker numbers: diagnostics use 20-21, the BDS5 transfer 22-23; 24-25 are the current line
+    // (as DebugHighlighter), 26 the breakpoint dot.
+    static constexpr int kCurrentLineMarker = 24;
+    static constexpr int kArrowMarker = 25;
+    static constexpr int kBreakpointMarker = 26;
+    static constexpr int kErrorMarker = 20;
+    static constexpr int kMarkerMargin = 1;
+    static constexpr int kMaxBreakpoints = 10; // L2706
+
+    explicit Sc750Debugger(Sc750Workspace& workspace);
+
+    // Compile Program: true when the editor's text compiled; on an error the editor shows it.
+    bool compile();
+    // Run Program (Ctrl R): compiles when never compiled or changed since, downloads, runs.
+    void run();
+    // Options > Download BIN File: an image compiled earlier, downloaded and run without its source.
+    void downloadBin(std::vector<std::uint8_t> bin);
+    void stop();
+    void continueProgram();
+    void reset();
+    // Set Breakpoint (F9) on the cursor's line of the current editor: sets or clears it.
+    void toggleBreakpoint();
+    void toggleBreakpointAt(editor::ProgramEditor& editor, int line); // 0-based line
+    void clearBreakpoints();
+    // 1-based lines that carry a breakpoint marker in the program's editor.
+    QList<int> breakpointLines() const;
+
+    State state() const { return m_state; }
+    bool running() const { return m_state == State::Running || m_state == State::Downloading; }
+    QString stateText() const;
+    // The 0-based editor line marked as current (stopped, breakpoint), or -1.
+    int currentLine() const { return m_currentLine; }
+    // The last compile's error text ("LINE 3 COL 7 NEAR 'x': ..."), empty when it compiled.
+    QString lastError() const { return m_lastError; }
+    const drive_core::sc750::CompileResult& lastCompile() const { return m_compiled; }
+
+    // The session was created or dropped: wire its events.
+    void attachSession();
+    // Prepares an editor's margin for breakpoints and the current-line marks (once per editor).
+    void prepareEditor(editor::ProgramEditor& editor);
+
+signals:
+    void stateChanged();
+    void message(const QString& text);
+    void runStarted(); // the program was downloaded and R answered: the output window opens
+
+private:
+    void setState(State state);
+    void download(const std::vector<std::uint8_t>& bin);
+    void startProgram();
+    void sendBreakpoints();
+    void markLine(int line); // 1-based drive line; 0 clears
+    void showError(editor::ProgramEditor& editor, const drive_core::sc750::CompileError& error);
+    void clearError(editor::ProgramEditor& editor);
+
+    Sc750Workspace& m_workspace;
+    QPointer<editor::ProgramEditor> m_program; // the editor whose program is on the drive
+    QPointer<QProgressDialog> m_progress;
+    drive_core::sc750::CompileResult m_compiled;
+    QString m_compiledText; // the text m_compiled came from
+    QString m_lastError;
+    State m_state = State::NoProgram;
+    int m_currentLine = -1;
+};
+
+} // namespace app

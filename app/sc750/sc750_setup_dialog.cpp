@@ -1,0 +1,173 @@
+// Sc750SetupDialog: the set-up screen, the Auto rule, and writing the result.
+#include "sc750_setup_dialog.h"
+
+#include "sc750_workspace.h"
+
+#include "main_window.h"
+
+#include "drive_core/catalog/sc750_catalog.h"
+#include "editor/program_editor.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPointer>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QRegularExpression>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace app {
+
+namespace catalog = drive_core::catalog::sc750;
+
+Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
+    : QDialog(parent), m_workspace(workspace), m_part(new QLineEdit), m_model(new QLabel(tr("(reading...)"))),
+      m_auto(new QRadioButton(tr("&Auto"))), m_manual(new QRadioButton(tr("&Manual"))), m_response(new QComboBox),
+      m_table(new QTableWidget(0, 2)), m_status(new QLabel) {
+    setObjectName(QStringLiteral("sc750SetupDialog"));
+    setWindowTitle(tr("Controller Set Up"));
+    auto* layout = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    m_part->setPlaceholderText(tr("Enter the first four digits of your part number"));
+    m_part->setMaxLength(4);
+    form->addRow(tr("Motor &part number:"), m_part);
+    form->addRow(tr("Controller model:"), m_model);
+    auto* modes = new QHBoxLayout;
+    modes->addWidget(m_auto);
+    modes->addWidget(m_manual);
+    modes->addStretch();
+    form->addRow(tr("Set-up mode:"), modes);
+    m_response->addItems({tr("Stiff/High Bandwidth"), tr("Gentle/Low Bandwidth")});
+    form->addRow(tr("System &Response:"), m_response);
+    layout->addLayout(form);
+    m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("Value")});
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    layout->addWidget(m_table, 1);
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    layout->addWidget(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, this, &Sc750SetupDialog::apply);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(m_auto, &QRadioButton::toggled, this, [this](bool on) { setManual(!on); });
+    connect(m_response, &QComboBox::currentIndexChanged, this, [this] {
+        if (m_auto->isChecked()) fillAuto();
+    });
+    resize(460, 560);
+    m_auto->setChecked(true);
+    fillAuto();
+    // The Options path reads the model from the controller (L2574).
+    m_workspace.send(
+        'V', {},
+        [self = QPointer(this)](const serialport::Sc750Reply& reply) {
+            if (self) self->m_model->setText(QStringLiteral("SC%1").arg(reply.payload.section(QLatin1Char(','), 0, 0)));
+        },
+        [self = QPointer(this)](const QString& why) {
+            if (self) self->m_model->setText(tr("unknown (%1)").arg(why));
+        });
+}
+
+QList<QPair<QString, double>> Sc750SetupDialog::autoParameters(bool gentle) {
+    QList<QPair<QString, double>> values;
+    for (const catalog::VariableInfo& v : catalog::variables()) {
+        if (v.access != catalog::Access::Parameter || v.name == "AUTOSTART") continue;
+        const QString name = QString::fromLatin1(v.name.data(), qsizetype(v.name.size()));
+        double value = v.defaultValue;
+        if (gentle) {
+            if (name == QLatin1String("KVP") || name == QLatin1String("KVI") || name == QLatin1String("KPP")) value /= 2;
+            if (name == QLatin1String("ARF0")) value = 100;
+            if (name == QLatin1String("ARF1")) value = 500;
+        }
+        values.append({name, value});
+    }
+    return values;
+}
+
+void Sc750SetupDialog::fillAuto() {
+    const auto values = autoParameters(m_response->currentIndex() == 1);
+    m_table->setRowCount(int(values.size()));
+    for (int row = 0; row < values.size(); ++row) {
+        auto* name = new QTableWidgetItem(values[row].first);
+        name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+        m_table->setItem(row, 0, name);
+        m_table->setItem(row, 1, new QTableWidgetItem(QString::number(values[row].second, 'g', 9)));
+    }
+    setManual(m_manual->isChecked());
+}
+
+void Sc750SetupDialog::setManual(bool manual) {
+    m_manual->setChecked(manual);
+    m_auto->setChecked(!manual);
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        QTableWidgetItem* item = m_table->item(row, 1);
+        item->setFlags(manual ? item->flags() | Qt::ItemIsEditable : item->flags() & ~Qt::ItemIsEditable);
+    }
+    setStatus(manual ? tr("Manual: edit the values, then OK.") : tr("Auto: computed for a stable, medium-performance "
+                                                                     "servo; OK writes them."),
+              false);
+}
+
+void Sc750SetupDialog::setGentle(bool gentle) {
+    m_response->setCurrentIndex(gentle ? 1 : 0);
+}
+
+QString Sc750SetupDialog::paramsBlock() const {
+    QStringList lines{QStringLiteral("PARAMS START")};
+    for (int row = 0; row < m_table->rowCount(); ++row)
+        lines << QStringLiteral("%1 = %2").arg(m_table->item(row, 0)->text(), m_table->item(row, 1)->text().trimmed());
+    lines << QStringLiteral("PARAMS END");
+    return lines.join(QLatin1Char('\n'));
+}
+
+QString Sc750SetupDialog::withParams(const QString& text, const QString& block) {
+    static const QRegularExpression existing(QStringLiteral("^[ \\t]*PARAMS[ \\t]+START\\b.*?^[ \\t]*PARAMS[ \\t]+END[^\\n]*"),
+                                             QRegularExpression::CaseInsensitiveOption |
+                                                 QRegularExpression::MultilineOption |
+                                                 QRegularExpression::DotMatchesEverythingOption);
+    const QRegularExpressionMatch match = existing.match(text);
+    if (match.hasMatch()) return QString(text).replace(match.capturedStart(), match.capturedLength(), block);
+    return QStringLiteral("'-----Parameter Values Header-----\n") + block + QStringLiteral("\n\n") + text;
+}
+
+void Sc750SetupDialog::apply() {
+    editor::ProgramEditor* editor = m_workspace.window().editor();
+    const QString part = m_part->text().trimmed();
+    QString block = paramsBlock();
+    if (!part.isEmpty()) block = QStringLiteral("' Motor %1, %2\n").arg(part, m_response->currentText()) + block;
+    editor->beginUndoAction();
+    editor->selectAll();
+    editor->replaceSelectedText(withParams(editor->text(), block));
+    editor->endUndoAction();
+    editor->setCursorPosition(0, 0);
+    accept();
+    if (!m_workspace.isConnected()) {
+        emit m_workspace.message(tr("The PARAMS block is in the program; connect to set up the controller"));
+        return;
+    }
+    // Then the controller: each value, and configured (it shows UC until then, L1555).
+    for (int row = 0; row < m_table->rowCount(); ++row)
+        m_workspace.send('P', QStringLiteral("%1=%2").arg(m_table->item(row, 0)->text(), m_table->item(row, 1)->text().trimmed()),
+                         {}, [ws = &m_workspace](const QString& why) { emit ws->message(tr("Set up: %1").arg(why)); });
+    m_workspace.send('K', QStringLiteral("1"), [ws = &m_workspace](const serialport::Sc750Reply&) {
+        emit ws->message(tr("The controller is set up and configured"));
+    });
+}
+
+QString Sc750SetupDialog::status() const {
+    return m_status->text();
+}
+
+void Sc750SetupDialog::setStatus(const QString& text, bool error) {
+    m_status->setText(text);
+    m_status->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+}
+
+} // namespace app

@@ -1,0 +1,57 @@
+// Sc750SetupDialog: Options > Controller Set Up (L2430-L2610). Motor part number, the controller model
+// read over the wire, Auto or Manual set-up and the System Response (Stiff/High Bandwidth or Gentle/Low
+// Bandwidth, L2246). Auto computes the PARAMS values (our rule, below); Manual lets the user edit them.
+// OK writes the PARAMS block into the program in the editor, sends each value to the controller and
+// configures it (K1). Non-modal; GUI thread only.
+//
+// chosen: the manual gives no formulas for the gains (digest §2.10). Auto starts from the boiler-plate
+// values (the manual's stable, medium-performance set, L946-L973) and for Gentle/Low Bandwidth halves
+// KVP, KVI and KPP and lowers the anti-resonance filters to 100/500 Hz (large inertia mismatch, belts).
+#pragma once
+
+#include <QDialog>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QRadioButton;
+class QTableWidget;
+
+namespace app {
+
+class Sc750Workspace;
+
+class Sc750SetupDialog final : public QDialog {
+    Q_OBJECT
+public:
+    Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent = nullptr);
+
+    // The Auto values: name and value of every PARAMS parameter, in catalog order.
+    static QList<QPair<QString, double>> autoParameters(bool gentle);
+    // "PARAMS START" ... "PARAMS END" for the values in the table.
+    QString paramsBlock() const;
+    // Replaces the PARAMS block of text (or puts one at the top) with block.
+    static QString withParams(const QString& text, const QString& block);
+
+    void setManual(bool manual);
+    void setGentle(bool gentle);
+    QTableWidget* table() const { return m_table; }
+    QString status() const;
+    // OK: editor, controller, configure.
+    void apply();
+
+private:
+    void fillAuto();
+    void setStatus(const QString& text, bool error);
+
+    Sc750Workspace& m_workspace;
+    QLineEdit* m_part;
+    QLabel* m_model;
+    QRadioButton* m_auto;
+    QRadioButton* m_manual;
+    QComboBox* m_response;
+    QTableWidget* m_table;
+    QLabel* m_status;
+};
+
+} // namespace app

@@ -1,0 +1,286 @@
+// Sc750Workspace: link and session lifetime, the Motion Dialogue menus, editor hooks and the status line.
+#include "sc750_workspace.h"
+
+#include "sc750_controller_menu.h"
+#include "sc750_debugger.h"
+#include "sc750_function_dialog.h"
+#include "sc750_output_dock.h"
+#include "sc750_variables_dock.h"
+#include "servobasic_language.h"
+
+#include "editor_area.h"
+#include "editor_tabs.h"
+#include "file_types.h"
+#include "main_window.h"
+#include "terminal_dock.h"
+
+#include "editor/program_editor.h"
+
+#include <QAction>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMenu>
+#include <QStatusBar>
+
+namespace app {
+
+Sc750Workspace::Sc750Workspace(MainWindow& window)
+    : FamilyWorkspace(&window), m_window(window), m_debugger(new Sc750Debugger(*this)),
+      m_output(new Sc750OutputDock(&window)), m_variables(new Sc750VariablesDock(*this, &window)) {
+    createMenus();
+    m_cursorLabel = new QLabel(&window);
+    m_cursorLabel->setObjectName(QStringLiteral("sc750CursorLabel"));
+    m_cursorLabel->setToolTip(tr("Motion Dialogue's status line: the axis and the cursor's line and column"));
+    m_cursorLabel->setContentsMargins(6, 0, 6, 0);
+    m_cursorLabel->hide();
+    window.statusBar()->addPermanentWidget(m_cursorLabel);
+
+    connect(m_debugger, &Sc750Debugger::message, this, &FamilyWorkspace::message);
+    connect(m_debugger, &Sc750Debugger::stateChanged, this, [this] {
+        updateActions();
+        m_variables->setWritable(!m_debugger->running());
+        emit statusChanged();
+    });
+    connect(m_debugger, &Sc750Debugger::runStarted, this, [this] {
+        m_output->clear();
+        m_output->show();
+        m_output->raise();
+    });
+    connect(m_output, &Sc750OutputDock::stopRequested, this, [this] {
+        if (m_debugger->state() == Sc750Debugger::State::Running) m_debugger->stop();
+    });
+    connect(m_output, &Sc750OutputDock::inputTyped, this, [this](const QByteArray& bytes) {
+        if (m_connected) m_session->sendProgramInput(bytes);
+    });
+    connect(&window, &MainWindow::familyChanged, this, [this](drive_core::DriveFamily family) {
+        m_shown = family == drive_core::DriveFamily::Sc750;
+        if (m_shown && !m_placed) {
+            // Motion Dialogue's output window sits under the editor, with the terminal.
+            m_placed = true;
+            m_window.addDockWidget(Qt::BottomDockWidgetArea, m_output);
+            m_window.tabifyDockWidget(m_window.terminalDock(), m_output);
+            m_output->hide();
+        }
+        m_cursorLabel->setVisible(m_shown);
+        updateActions();
+        followEditor(m_window.editor());
+    });
+    connect(&window, &MainWindow::currentEditorChanged, this, &Sc750Workspace::followEditor);
+    connect(window.editorArea(), &EditorArea::currentDocumentChanged, this,
+            [this] { followEditor(m_window.editor()); });
+    updateActions();
+}
+
+Sc750Workspace::~Sc750Workspace() {
+    // The window's widgets are going: nothing from the closing link may reach them.
+    if (m_link) m_link->disconnect(this);
+    m_session.reset(); // it keeps a reference to the link
+    m_link.reset();
+}
+
+QList<QMenu*> Sc750Workspace::menus() const {
+    return {m_compileMenu, m_optionsMenu};
+}
+
+QList<QDockWidget*> Sc750Workspace::docks() const {
+    return {m_output, m_variables};
+}
+
+void Sc750Workspace::createMenus() {
+    m_compileMenu = new QMenu(tr("&Compile"), &m_window);
+    m_compileMenu->setObjectName(QStringLiteral("sc750CompileMenu"));
+    QMenu* menu = m_compileMenu;
+    menu->addAction(tr("&Compile Program"), QKeySequence(tr("Ctrl+F9")), m_debugger, &Sc750Debugger::compile);
+    menu->addAction(tr("&Run Program"), QKeySequence(tr("Ctrl+R")), m_debugger, &Sc750Debugger::run);
+    menu->addAction(tr("R&eset Program"), QKeySequence(tr("Alt+R")), m_debugger, &Sc750Debugger::reset);
+    // F5 (L2661); F8 is the manual's other key for it (L2732).
+    QAction* cont = menu->addAction(tr("Co&ntinue Program"), m_debugger, &Sc750Debugger::continueProgram);
+    cont->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(Qt::Key_F8)});
+    // Ctrl C (L2692) is also Copy: the editor and the output window take it as Stop only while a program
+    // runs and no text is selected (eventFilter, Sc750OutputDock::stopRequested), so it is shown in the
+    // menu but is not the action's shortcut (that would be ambiguous with Copy); Ctrl+Break works anywhere.
+    QAction* stop = menu->addAction(tr("&Stop Program\tCtrl+C"), m_debugger, &Sc750Debugger::stop);
+    stop->setShortcut(QKeySequence(tr("Ctrl+Break")));
+    menu->addSeparator();
+    QAction* output = menu->addAction(tr("&Output Window"), QKeySequence(Qt::Key_F4), this, [this] {
+        m_output->setVisible(!m_output->isVisible() || !m_output->hasFocus());
+        if (m_output->isVisible()) m_output->focusInput();
+    });
+    output->setObjectName(QStringLiteral("sc750OutputAction"));
+    menu->addAction(tr("Set &Breakpoint"), QKeySequence(Qt::Key_F9), m_debugger, &Sc750Debugger::toggleBreakpoint);
+    menu->addAction(tr("Clear &All Breakpoints"), m_debugger, &Sc750Debugger::clearBreakpoints);
+    menu->addAction(tr("&Variables..."), this, [this] {
+        m_variables->show();
+        m_variables->raise();
+        m_variables->focusName();
+    });
+    menu->addAction(tr("Real &Time Function Call..."), this, &Sc750Workspace::showFunctionCall);
+    m_optionsMenu = new Sc750ControllerMenu(*this, &m_window);
+}
+
+QAction* Sc750Workspace::action(const QString& text) const {
+    for (QMenu* menu : menus())
+        for (QAction* a : menu->actions()) {
+            QString name = a->text().section(QLatin1Char('\t'), 0, 0);
+            name.remove(QLatin1Char('&'));
+            if (name.endsWith(QLatin1String("..."))) name.chop(3);
+            if (name == text) return a;
+        }
+    return nullptr;
+}
+
+QWidget* Sc750Workspace::showFunctionCall() {
+    auto* dialog = new Sc750FunctionDialog(*this, &m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
+}
+
+void Sc750Workspace::activate(const ConnectionChoice& choice) {
+    deactivate();
+    m_link = choice.makeLink();
+    m_session = std::make_unique<serialport::Sc750Session>(*m_link);
+    m_linkText = m_link->description();
+    connect(m_session.get(), &serialport::Sc750Session::finished, this,
+            [this](quint64 id, const serialport::Sc750Reply& reply) {
+                const auto handlers = m_waiting.take(id);
+                if (handlers.first) handlers.first(reply);
+            });
+    connect(m_session.get(), &serialport::Sc750Session::failed, this, [this](quint64 id, const QString& why) {
+        const auto handlers = m_waiting.take(id);
+        if (handlers.second) handlers.second(why);
+        else emit message(tr("SC750: %1").arg(why));
+    });
+    connect(m_session.get(), &serialport::Sc750Session::programOutput, m_output, &Sc750OutputDock::display);
+    connect(m_link.get(), &serialport::Link::opened, this, &Sc750Workspace::onOpened);
+    connect(m_link.get(), &serialport::Link::errorOccurred, this, &Sc750Workspace::onLinkError);
+    connect(m_link.get(), &serialport::Link::closed, this, [this] {
+        m_connected = false;
+        updateActions();
+        emit statusChanged();
+    });
+    m_link->open();
+    emit statusChanged();
+}
+
+void Sc750Workspace::onOpened() {
+    m_connected = true;
+    m_debugger->attachSession();
+    if (m_axis != 255) m_session->logOn(m_axis);
+    send('V', {}, [this](const serialport::Sc750Reply& reply) {
+        const QStringList parts = reply.payload.split(QLatin1Char(','));
+        if (parts.size() >= 2) m_linkText = tr("SC%1, firmware %2").arg(parts[0], parts[1]);
+        emit statusChanged();
+    });
+    updateActions();
+    emit statusChanged();
+    emit message(tr("Connected to %1").arg(m_link->description()));
+}
+
+void Sc750Workspace::onLinkError(const QString& text) {
+    emit message(text);
+    if (m_link && !m_link->isOpen() && m_connected) {
+        m_connected = false;
+        updateActions();
+    }
+    emit statusChanged();
+}
+
+void Sc750Workspace::deactivate() {
+    if (!m_link) return;
+    m_waiting.clear();
+    const bool wasConnected = m_connected;
+    m_connected = false;
+    m_session.reset();
+    m_link->disconnect(this);
+    m_link->close();
+    m_link.reset();
+    m_debugger->attachSession();
+    updateActions();
+    emit statusChanged();
+    if (wasConnected) emit message(tr("Disconnected from the SC750"));
+}
+
+void Sc750Workspace::setAxis(int axis) {
+    m_axis = qBound(0, axis, 255);
+    if (m_connected && m_axis != 255) m_session->logOn(m_axis);
+    showCursorStatus();
+    emit statusChanged();
+}
+
+bool Sc750Workspace::isConnected() const {
+    return m_connected;
+}
+
+QString Sc750Workspace::statusText() const {
+    if (!m_connected) return tr("SC750 axis %1, not connected").arg(m_axis);
+    return tr("%1 axis %2, %3 \u2014 %4").arg(m_linkText).arg(m_axis).arg(m_debugger->stateText(), m_link->description());
+}
+
+bool Sc750Workspace::send(char letter, const QString& payload, Done done, Failed failed) {
+    if (!m_connected) {
+        if (failed) failed(tr("not connected"));
+        else emit message(tr("Not connected to an SC750: choose Drive > Connect..."));
+        return false;
+    }
+    m_waiting.insert(m_session->send(letter, payload), {std::move(done), std::move(failed)});
+    return true;
+}
+
+void Sc750Workspace::updateActions() {
+    using State = Sc750Debugger::State;
+    const State state = m_debugger->state();
+    const bool on = m_shown && m_connected;
+    const bool idle = on && !m_debugger->running();
+    for (QAction* a : m_compileMenu->actions()) a->setEnabled(on);
+    action(QStringLiteral("Compile Program"))->setEnabled(m_shown);
+    action(QStringLiteral("Set Breakpoint"))->setEnabled(m_shown);
+    action(QStringLiteral("Clear All Breakpoints"))->setEnabled(m_shown);
+    action(QStringLiteral("Output Window"))->setEnabled(m_shown);
+    action(QStringLiteral("Variables"))->setEnabled(m_shown);
+    action(QStringLiteral("Stop Program"))->setEnabled(on && state == State::Running);
+    action(QStringLiteral("Continue Program"))->setEnabled(on && (state == State::Stopped || state == State::AtBreakpoint));
+    action(QStringLiteral("Real Time Function Call"))->setEnabled(idle);
+    for (QAction* a : m_optionsMenu->actions()) a->setEnabled(m_shown);
+    showCursorStatus();
+}
+
+void Sc750Workspace::followEditor(editor::ProgramEditor* editor) {
+    if (!editor) return;
+    const bool basic = fileTypeOf(m_window.editorArea()->tabs()->displayName(editor)) == FileType::Sc750Program;
+    if (basic) ServoBasicLanguage::install(*editor);
+    else ServoBasicLanguage::uninstall(*editor);
+    if (m_editor != editor) {
+        if (m_editor) m_editor->disconnect(this);
+        m_editor = editor;
+        connect(editor, &QsciScintilla::cursorPositionChanged, this, &Sc750Workspace::showCursorStatus);
+        editor->installEventFilter(this);
+    }
+    showCursorStatus();
+}
+
+void Sc750Workspace::showCursorStatus() {
+    if (!m_shown || !m_editor) return;
+    int line = 0, index = 0;
+    m_editor->getCursorPosition(&line, &index);
+    m_cursorLabel->setText(tr("Axis %1  Line %2 Col %3")
+                               .arg(m_axis, 3, 10, QLatin1Char('0'))
+                               .arg(line + 1, 4, 10, QLatin1Char('0'))
+                               .arg(index + 1, 2, 10, QLatin1Char('0')));
+}
+
+bool Sc750Workspace::eventFilter(QObject* watched, QEvent* event) {
+    // Ctrl C stops a running program (L2692) unless the user is copying a selection.
+    if (m_shown && watched == m_editor && (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_C && key->modifiers() == Qt::ControlModifier && !m_editor->hasSelectedText() &&
+            m_debugger->state() == Sc750Debugger::State::Running) {
+            event->accept();
+            if (event->type() == QEvent::KeyPress) m_debugger->stop();
+            return true;
+        }
+    }
+    return FamilyWorkspace::eventFilter(watched, event);
+}
+
+} // namespace app

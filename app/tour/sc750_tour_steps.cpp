@@ -1,0 +1,127 @@
+// SC750 tour steps: connect, run, break, inspect, grab; then a compile error; then back to the BDS5.
+#include "sc750_tour_steps.h"
+
+#include "editor_area.h"
+#include "editor_tabs.h"
+#include "main_window.h"
+
+#include "editor/outline_dock.h"
+#include "editor/program_editor.h"
+#include "sc750/sc750_debugger.h"
+#include "sc750/sc750_output_dock.h"
+#include "sc750/sc750_variables_dock.h"
+#include "sc750/sc750_workspace.h"
+
+#include <QPointer>
+
+#include <memory>
+
+namespace app {
+
+namespace {
+// A small program in the manual's layout: declarations, a labelled loop, PRINT to the output window.
+const char* kDemo = R"('----- Motion Dialogue demo: index, report, repeat -----
+'----- Variable Definitions -----
+DIM Count AS INTEGER
+DIM Distance AS FLOAT
+
+'----- Main Program -----
+Count = 0
+Distance = 2.5            ' revolutions per index
+PAUSE.TIME = 0.05
+Index_Loop:
+    Count = Count + 1
+    PRINT "Index"; Count; "of"; Distance; "revs"
+    PAUSE
+    GOTO Index_Loop
+END
+)";
+constexpr int kPrintLine = 11; // 0-based: the PRINT
+
+// The same program with a typing mistake the compiler stops at.
+const char* kBroken = R"('----- Motion Dialogue demo with a mistake -----
+DIM Count AS INTEGER
+Count = 0
+Index_Loop:
+    Count = Count + 1
+    PRINT "Index"; Count
+    GOTO Index_Lop
+END
+)";
+
+Sc750Workspace* sc750(MainWindow& window) {
+    return static_cast<Sc750Workspace*>(window.workspace(drive_core::DriveFamily::Sc750));
+}
+} // namespace
+
+std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
+    std::vector<ScreenshotTour::Step> steps;
+    if (!sc750(window)) return steps;
+    auto demo = std::make_shared<QPointer<editor::ProgramEditor>>();
+    auto outlineShown = std::make_shared<bool>(false);
+    steps.push_back({.name = QStringLiteral("sc750-connect"),
+                     .act = [&window, demo, outlineShown] {
+                         window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Sc750));
+                         *outlineShown = window.outlineDock()->isVisible();
+                         window.outlineDock()->hide(); // the BDS5 outline has nothing to say about ServoBASIC
+                         EditorTabs* tabs = window.editorArea()->tabs();
+                         *demo = tabs->addEditor(QStringLiteral("index.bas"));
+                         (*demo)->setText(QString::fromLatin1(kDemo));
+                         (*demo)->setModified(false);
+                         tabs->refreshTab(*demo);
+                     },
+                     .ready = [&window] { return sc750(window)->isConnected(); }});
+    steps.push_back({.name = QStringLiteral("sc750-run"),
+                     .act = [&window] { sc750(window)->debugger().run(); },
+                     .ready = [&window] {
+                         return sc750(window)->outputDock()->text().contains(QStringLiteral("Index 3 "));
+                     }});
+    steps.push_back({.name = QStringLiteral("sc750-break"),
+                     .act = [&window, demo] {
+                         if (*demo) sc750(window)->debugger().toggleBreakpointAt(**demo, kPrintLine);
+                     },
+                     .ready = [&window] {
+                         return sc750(window)->debugger().state() == Sc750Debugger::State::AtBreakpoint;
+                     }});
+    steps.push_back({.name = QStringLiteral("motion-dialogue"),
+                     .act = [&window] {
+                         Sc750VariablesDock* vars = sc750(window)->variablesDock();
+                         vars->show();
+                         for (const char* name : {"COUNT", "DISTANCE", "PAUSE.TIME", "RUN.SPEED", "POS.COMMAND"})
+                             vars->readVariable(QString::fromLatin1(name));
+                     },
+                     .ready = [&window] {
+                         return !sc750(window)->variablesDock()->value(QStringLiteral("POS.COMMAND")).isEmpty();
+                     },
+                     .grab = [&window] { return window.grab(); }});
+    steps.push_back({.name = QStringLiteral("sc750-function-call"),
+                     .act = [&window] { sc750(window)->showFunctionCall(); },
+                     .ready = [&window] {
+                         auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"));
+                         return dialog && dialog->isVisible();
+                     },
+                     .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))->grab(); },
+                     .cleanUp = [&window] {
+                         if (auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))) dialog->close();
+                     }});
+    steps.push_back({.name = QStringLiteral("sc750-compile-error"),
+                     .act = [&window, demo] {
+                         Sc750Workspace* ws = sc750(window);
+                         ws->variablesDock()->hide();
+                         ws->outputDock()->hide();
+                         if (*demo) (*demo)->setText(QString::fromLatin1(kBroken));
+                         ws->debugger().compile();
+                     },
+                     .ready = [&window] { return !sc750(window)->debugger().lastError().isEmpty(); },
+                     .grab = [&window] { return window.grab(); },
+                     .cleanUp = [&window, demo, outlineShown] {
+                         sc750(window)->debugger().reset();
+                         sc750(window)->outputDock()->hide();
+                         if (*demo) (*demo)->setModified(false);
+                         window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
+                         window.outlineDock()->setVisible(*outlineShown);
+                     }});
+    return steps;
+}
+
+} // namespace app

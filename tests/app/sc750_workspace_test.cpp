@@ -1,0 +1,290 @@
+// Motion Dialogue in the real MainWindow against the simulated SC750 (issue 8): the family's menus replace
+// the BDS5's; Compile marks the first error's line; Run downloads and runs a manual example whose PRINT
+// text reaches the Output window; a breakpoint stops it with its line marked; a variable is read and
+// changed while stopped; Continue resumes; Ctrl C in the editor stops; ServoBASIC colours and F1 help.
+#include "app/main_window.h"
+#include "app/sc750/sc750_controller_menu.h"
+#include "app/sc750/sc750_debugger.h"
+#include "app/sc750/sc750_output_dock.h"
+#include "app/sc750/sc750_setup_dialog.h"
+#include "app/sc750/sc750_variables_dock.h"
+#include "app/sc750/sc750_workspace.h"
+#include "app/sc750/servobasic_language.h"
+#include "app/sc750/servobasic_lexer.h"
+
+#include "editor/help_popup.h"
+#include "editor/program_editor.h"
+
+#include <QAction>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QFile>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTest>
+
+#include <memory>
+
+using app::MainWindow;
+using app::Sc750Debugger;
+using app::Sc750Workspace;
+using drive_core::DriveFamily;
+
+namespace {
+constexpr int kTimeoutMs = 20000;
+
+QString example(const char* name) {
+    QFile file(QStringLiteral(SC750_EXAMPLES "/") + QLatin1String(name));
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+}
+
+bool menuVisible(const MainWindow& window, const QString& title) {
+    for (QAction* a : window.menuBar()->actions())
+        if (a->text() == title) return a->isVisible();
+    return false;
+}
+
+// Connects to the simulated SC750 and opens a new .bas tab (Controller > Create Program) holding text.
+Sc750Workspace& connectSc750(MainWindow& window, const QString& text = {}) {
+    window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
+    auto& ws = *static_cast<Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+    qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
+    if (!text.isEmpty()) window.editor()->setText(text);
+    return ws;
+}
+} // namespace
+
+class Sc750WorkspaceTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskSc750WorkspaceTest"));
+        QSettings().clear();
+    }
+
+    void connectingShowsMotionDialogueMenus() {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.workspace(DriveFamily::Sc750));
+        QVERIFY(!menuVisible(window, QStringLiteral("&Compile")));
+        QVERIFY(menuVisible(window, QStringLiteral("&Program")));
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
+        auto& ws = *static_cast<Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        QVERIFY(menuVisible(window, QStringLiteral("&Compile")));
+        QVERIFY(menuVisible(window, QStringLiteral("Co&ntroller")));
+        QVERIFY(!menuVisible(window, QStringLiteral("&Program")));
+        QCOMPARE(ws.action(QStringLiteral("Run Program"))->shortcut(), QKeySequence(QStringLiteral("Ctrl+R")));
+        QCOMPARE(ws.action(QStringLiteral("Reset Program"))->shortcut(), QKeySequence(QStringLiteral("Alt+R")));
+        QCOMPARE(ws.action(QStringLiteral("Continue Program"))->shortcut(), QKeySequence(Qt::Key_F5));
+        QCOMPARE(ws.action(QStringLiteral("Output Window"))->shortcut(), QKeySequence(Qt::Key_F4));
+        QCOMPARE(ws.action(QStringLiteral("Set Breakpoint"))->shortcut(), QKeySequence(Qt::Key_F9));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusText().contains(QStringLiteral("SC752")), kTimeoutMs);
+        // Back to the BDS5: the Program menu returns, ours go.
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Bds5));
+        QVERIFY(!ws.isConnected());
+        QVERIFY(!menuVisible(window, QStringLiteral("&Compile")));
+        QVERIFY(menuVisible(window, QStringLiteral("&Program")));
+    }
+
+    void compileErrorMarksItsLine() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM a AS INTEGER\na = 1\nGOTO Nowhere\nEND\n"));
+        QVERIFY(!ws.debugger().compile());
+        QVERIFY2(ws.debugger().lastError().startsWith(QStringLiteral("LINE 3 ")), qPrintable(ws.debugger().lastError()));
+        int line = 0, index = 0;
+        window.editor()->getCursorPosition(&line, &index);
+        QCOMPARE(line, 2);
+        QVERIFY(window.editor()->markersAtLine(2) & (1 << Sc750Debugger::kErrorMarker));
+        QVERIFY(window.editor()->annotation(2).contains(QStringLiteral("Col ")));
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("Compile error")));
+        // Fixed, it compiles and the mark goes.
+        window.editor()->setText(QStringLiteral("DIM a AS INTEGER\na = 1\nEND\n"));
+        QVERIFY(ws.debugger().compile());
+        QCOMPARE(window.editor()->markerFindNext(0, 1 << Sc750Debugger::kErrorMarker), -1);
+    }
+
+    void runBreakpointVariablesContinue() {
+        MainWindow window;
+        window.show();
+        // 02-loop-again.bas (L1134-L1136): PRINT "All work and no play" forever.
+        const QString program = example("02-loop-again.bas");
+        QVERIFY(!program.isEmpty());
+        Sc750Workspace& ws = connectSc750(window, program);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        // A breakpoint on the PRINT line (2), set before running (L2706).
+        window.editor()->setCursorPosition(1, 4);
+        ws.action(QStringLiteral("Set Breakpoint"))->trigger();
+        QCOMPARE(ws.debugger().breakpointLines(), QList<int>{2});
+        QSignalSpy started(&ws.debugger(), &Sc750Debugger::runStarted);
+        ws.action(QStringLiteral("Run Program"))->trigger(); // compiles first: never compiled
+        QTRY_COMPARE_WITH_TIMEOUT(started.count(), 1, kTimeoutMs); // downloaded, R answered
+        QVERIFY(ws.outputDock()->isVisible());
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
+        QCOMPARE(ws.debugger().currentLine(), 1);
+        QVERIFY(window.editor()->markersAtLine(1) & (1 << Sc750Debugger::kCurrentLineMarker));
+        QVERIFY(ws.statusText().contains(QStringLiteral("At breakpoint")));
+        // Continue: one PRINT, and the breakpoint again.
+        ws.action(QStringLiteral("Continue Program"))->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().contains(QStringLiteral("All work and no play")), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
+        QCOMPARE(ws.outputDock()->text().count(QStringLiteral("All work")), 1);
+
+        // Variables while stopped: read, write, read back.
+        app::Sc750VariablesDock* vars = ws.variablesDock();
+        vars->readVariable(QStringLiteral("RUN.SPEED"));
+        QTRY_VERIFY_WITH_TIMEOUT(!vars->value(QStringLiteral("RUN.SPEED")).isEmpty(), kTimeoutMs);
+        vars->writeVariable(QStringLiteral("RUN.SPEED"), QStringLiteral("250"));
+        QTRY_COMPARE_WITH_TIMEOUT(vars->value(QStringLiteral("RUN.SPEED")), QStringLiteral("250"), kTimeoutMs);
+        vars->readVariable(QStringLiteral("run.speed"));
+        QTRY_VERIFY_WITH_TIMEOUT(vars->lastMessage().contains(QStringLiteral("read")), kTimeoutMs);
+        QCOMPARE(vars->value(QStringLiteral("RUN.SPEED")), QStringLiteral("250"));
+        QCOMPARE(vars->table()->rowCount(), 1);
+
+        // Continue resumes: one more PRINT and the breakpoint again.
+        ws.action(QStringLiteral("Continue Program"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.outputDock()->text().count(QStringLiteral("All work")), 2, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
+
+        // Reset: back to the top, not running.
+        ws.action(QStringLiteral("Reset Program"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::Loaded, kTimeoutMs);
+    }
+
+    void ctrlCInTheEditorStops() {
+        // PRINT with PAUSE: slower than the wire, so the controller's answers are not queued behind output.
+        // (02-loop-again prints faster than 9600 baud carries; the simulated SC750 then queues the excess
+        // ahead of its answers, and a stop is acknowledged only after it has all gone out.)
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window, QStringLiteral("PAUSE.TIME = 0.05\nTick:\n  PRINT \"tick\"\n  PAUSE\n"
+                                                                  "GOTO Tick\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        ws.debugger().run();
+        QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().count(QStringLiteral("tick")) >= 3, kTimeoutMs);
+        QCOMPARE(ws.debugger().state(), Sc750Debugger::State::Running);
+        window.activateWindow();
+        window.editor()->setFocus();
+        window.editor()->selectAll();
+        QTest::keyClick(window.editor(), Qt::Key_C, Qt::ControlModifier); // a selection: Copy, not Stop
+        QTest::qWait(300);
+        QCOMPARE(ws.debugger().state(), Sc750Debugger::State::Running);
+        window.editor()->setCursorPosition(0, 0);
+        QTest::keyClick(window.editor(), Qt::Key_C, Qt::ControlModifier); // L2692
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::Stopped, kTimeoutMs);
+        QVERIFY(ws.debugger().currentLine() >= 0);
+        ws.action(QStringLiteral("Continue Program"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::Running, kTimeoutMs);
+        ws.action(QStringLiteral("Stop Program"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::Stopped, kTimeoutMs);
+    }
+
+    void breakpointSetBeforeRunIsHit() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\nCount = Count + 1\n"
+                                                                  "PRINT \"Count is\"; Count\nEND\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        ws.debugger().toggleBreakpointAt(*window.editor(), 3); // the PRINT
+        ws.debugger().run();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
+        QCOMPARE(ws.debugger().currentLine(), 3);
+        ws.variablesDock()->readVariable(QStringLiteral("Count"));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("COUNT")), QStringLiteral("42"), kTimeoutMs);
+        ws.variablesDock()->writeVariable(QStringLiteral("Count"), QStringLiteral("7"));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("COUNT")), QStringLiteral("7"), kTimeoutMs);
+        ws.debugger().continueProgram();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::Ended, kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().contains(QStringLiteral("Count is 7")), kTimeoutMs);
+    }
+
+    void controllerSetUpAndUnconfigure() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window, QStringLiteral("PRINT \"hi\"\nEND\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
+        auto configured = [&ws] {
+            auto flag = std::make_shared<QString>();
+            ws.send('?', {}, [flag](const serialport::Sc750Reply& r) { *flag = r.payload.section(QLatin1Char(','), 4, 4); });
+            if (!QTest::qWaitFor([flag] { return !flag->isEmpty(); }, kTimeoutMs)) return QStringLiteral("no answer");
+            return *flag;
+        };
+
+        // Unconfigure: OK on the question, then "Yes" typed (L2580-L2591).
+        auto* question = qobject_cast<QMessageBox*>(menu->unconfigure());
+        QVERIFY(question);
+        question->button(QMessageBox::Ok)->click();
+        QDialog* confirm = nullptr;
+        QTRY_VERIFY((confirm = window.findChild<QDialog*>(QStringLiteral("sc750UnconfigureDialog"))));
+        auto* buttons = confirm->findChild<QDialogButtonBox*>();
+        confirm->findChild<QLineEdit*>()->setText(QStringLiteral("yes"));
+        QVERIFY(!buttons->button(QDialogButtonBox::Ok)->isEnabled());
+        confirm->findChild<QLineEdit*>()->setText(QStringLiteral("Yes"));
+        buttons->button(QDialogButtonBox::Ok)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(configured(), QStringLiteral("0"), kTimeoutMs);
+
+        // Controller Set Up, Auto, Gentle: the PARAMS block goes into the program, the controller is configured.
+        auto* setup = qobject_cast<app::Sc750SetupDialog*>(menu->controllerSetUp());
+        QVERIFY(setup);
+        setup->setGentle(true);
+        QVERIFY(setup->paramsBlock().contains(QStringLiteral("KVP = 0.043543")));
+        QVERIFY(setup->paramsBlock().contains(QStringLiteral("ARF0 = 100")));
+        setup->apply();
+        QVERIFY(window.editor()->text().startsWith(QStringLiteral("'-----Parameter Values Header-----\nPARAMS START")));
+        QVERIFY(window.editor()->text().endsWith(QStringLiteral("PRINT \"hi\"\nEND\n")));
+        QVERIFY(ws.debugger().compile());
+        QTRY_COMPARE_WITH_TIMEOUT(configured(), QStringLiteral("1"), kTimeoutMs);
+        ws.variablesDock()->readVariable(QStringLiteral("KVP"));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("KVP")), QStringLiteral(".043543"), kTimeoutMs);
+    }
+
+    void servoBasicEditing() {
+        QCOMPARE(app::servoBasicWordStyle("go.vel"), app::BasicKeyword);
+        QCOMPARE(app::servoBasicWordStyle("RUN.SPEED"), app::BasicVariable);
+        QCOMPARE(app::servoBasicWordStyle("Loop_Again"), app::BasicDefault);
+        const QByteArray styles = app::styleServoBasicLine("Loop_Again: PRINT \"x\" ' note");
+        QCOMPARE(styles[0], char(app::BasicLabel));
+        QCOMPARE(styles[12], char(app::BasicKeyword));
+        QCOMPARE(styles[18], char(app::BasicString));
+        QCOMPARE(styles[styles.size() - 1], char(app::BasicComment));
+        QVERIFY(app::ServoBasicLanguage::helpHtml(QStringLiteral("GO.VEL")).contains(QStringLiteral("GO.VEL")));
+
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window);
+        QVERIFY(window.editor()->text().contains(QStringLiteral("PARAMS START")));
+        QVERIFY(ws.debugger().compile()); // the boiler-plate compiles as it is
+        auto* language = app::ServoBasicLanguage::of(*window.editor());
+        QVERIFY(language);
+        QVERIFY(qobject_cast<app::ServoBasicLexer*>(window.editor()->lexer()));
+        window.editor()->setText(QStringLiteral("GO.VEL\n"));
+        window.editor()->setCursorPosition(0, 3);
+        QCOMPARE(language->showHelpAtCursor(), QStringLiteral("GO.VEL"));
+        QVERIFY(language->helpPopup()->isVisible());
+        auto* label = window.statusBar()->findChild<QLabel*>(QStringLiteral("sc750CursorLabel"));
+        QVERIFY(label);
+        QTRY_COMPARE(label->text(), QStringLiteral("Axis 255  Line 0001 Col 04")); // updated on Scintilla's UI update
+
+        // At most ten breakpoints (L2706), in the margin of an editor whose program is not on the drive.
+        window.editor()->setText(QStringLiteral("PRINT 1\n").repeated(15));
+        for (int line = 0; line < 12; ++line) ws.debugger().toggleBreakpointAt(*window.editor(), line);
+        QCOMPARE(ws.debugger().breakpointLines().size(), Sc750Debugger::kMaxBreakpoints);
+        ws.action(QStringLiteral("Clear All Breakpoints"))->trigger();
+        QVERIFY(ws.debugger().breakpointLines().isEmpty());
+    }
+};
+
+QTEST_MAIN(Sc750WorkspaceTest)
+#include "sc750_workspace_test.moc"
