@@ -1,14 +1,13 @@
 // Sc750Debugger: compile, download with progress, run control, breakpoints and the current-line mark.
 #include "sc750_debugger.h"
 
+#include "sc750_editor_marks.h"
 #include "sc750_workspace.h"
 
 #include "main_window.h"
 
 #include "editor/program_editor.h"
 #include "serialport/sc750_download.h"
-
-#include <Qsci/qscistyle.h>
 
 #include <QDir>
 #include <QFileInfo>
@@ -18,10 +17,6 @@
 namespace app {
 
 namespace {
-constexpr int kErrorIndicator = 20; // as Bds5Diagnostics: one squiggle for the drive's errors
-constexpr int kErrorLineIndicator = 22; // the whole offending line, drawn over the caret line (a marker is not)
-const char* kPreparedProperty = "sc750Prepared";
-
 // "07 NO STATEMENT ON LINE": the drive refused. A time-out is not a refusal: a program flooding the line
 // with PRINT output can delay the answer past the session's time-out while the drive did set it.
 bool isDriveRefusal(const QString& reason) {
@@ -54,36 +49,14 @@ QString Sc750Debugger::stateText() const {
 }
 
 void Sc750Debugger::prepareEditor(editor::ProgramEditor& editor) {
-    if (editor.property(kPreparedProperty).toBool()) return;
-    editor.setProperty(kPreparedProperty, true);
-    editor.markerDefine(QsciScintilla::Background, kCurrentLineMarker);
-    editor.setMarkerBackgroundColor(QColor(0xff, 0xe0, 0x8a), kCurrentLineMarker);
-    editor.markerDefine(QsciScintilla::RightArrow, kArrowMarker);
-    editor.setMarkerBackgroundColor(QColor(0xd9, 0x8c, 0x00), kArrowMarker);
-    editor.setMarkerForegroundColor(QColor(0x80, 0x50, 0x00), kArrowMarker);
-    editor.markerDefine(QsciScintilla::Circle, kBreakpointMarker);
-    editor.setMarkerBackgroundColor(QColor(0xd1, 0x24, 0x2f), kBreakpointMarker);
-    editor.setMarkerForegroundColor(QColor(0x9f, 0x1c, 0x24), kBreakpointMarker);
-    editor.markerDefine(QsciScintilla::Background, kErrorMarker);
-    editor.setMarkerBackgroundColor(QColor(0xff, 0xd7, 0xd4), kErrorMarker);
-    editor.setMarginType(kMarkerMargin, QsciScintilla::SymbolMargin);
-    editor.setMarginWidth(kMarkerMargin, 18);
-    editor.setMarginMarkerMask(kMarkerMargin,
-                               editor.marginMarkerMask(kMarkerMargin) | (1 << kBreakpointMarker) | (1 << kArrowMarker));
-    editor.setMarginSensitivity(kMarkerMargin, true);
-    editor.indicatorDefine(QsciScintilla::SquiggleLowIndicator, kErrorIndicator);
-    editor.setIndicatorForegroundColor(QColor(0xd1, 0x24, 0x2f), kErrorIndicator);
-    editor.indicatorDefine(QsciScintilla::StraightBoxIndicator, kErrorLineIndicator);
-    editor.setIndicatorForegroundColor(QColor(0xff, 0x5a, 0x4f, 60), kErrorLineIndicator);
-    editor.SendScintilla(QsciScintilla::SCI_INDICSETOUTLINEALPHA, static_cast<unsigned long>(kErrorLineIndicator), 0L);
-    editor.setAnnotationDisplay(QsciScintilla::AnnotationBoxed);
+    if (!defineSc750Marks(editor)) return; // prepared before
     connect(&editor, &QsciScintilla::marginClicked, this,
             [this, e = &editor](int margin, int line, Qt::KeyboardModifiers) {
                 if (margin == kMarkerMargin) toggleBreakpointAt(*e, line);
             });
     // The error belongs to the text it was found in: the next edit takes it away.
-    connect(&editor, &QsciScintilla::textChanged, this, [this, e = &editor] {
-        if (!e->annotation(e->markerFindNext(0, 1 << kErrorMarker)).isEmpty()) clearError(*e);
+    connect(&editor, &QsciScintilla::textChanged, this, [e = &editor] {
+        if (e->markerFindNext(0, 1 << kErrorMarker) >= 0) clearCompileError(*e);
     });
 }
 
@@ -93,10 +66,10 @@ bool Sc750Debugger::compile() {
     const QString text = editor.text();
     m_compiled = drive_core::sc750::compile(text.toStdString());
     m_compiledText = text;
-    clearError(editor);
+    clearCompileError(editor);
     if (!m_compiled.ok()) {
         m_lastError = QString::fromStdString(m_compiled.error->text());
-        showError(editor, *m_compiled.error);
+        showCompileError(editor, *m_compiled.error);
         emit message(tr("Compile error, line %1 col %2: %3")
                          .arg(m_compiled.error->line)
                          .arg(m_compiled.error->column)
@@ -118,35 +91,6 @@ bool Sc750Debugger::compile() {
                      .arg(m_compiled.program.dataBytes())
                      .arg(written));
     return true;
-}
-
-void Sc750Debugger::showError(editor::ProgramEditor& editor, const drive_core::sc750::CompileError& error) {
-    const int line = qBound(0, error.line - 1, qMax(0, editor.lines() - 1));
-    const int column = qMax(0, error.column - 1);
-    editor.markerAdd(line, kErrorMarker);
-    editor.annotate(line, tr("Col %1: %2").arg(error.column).arg(QString::fromStdString(error.message)),
-                    QsciStyle(-1, tr("SC750 compile error"), QColor(0x9f, 0x1c, 0x24), QColor(0xff, 0xf0, 0xef),
-                              editor.font(), true));
-    const int start = int(editor.positionFromLineIndex(line, column));
-    const int length = qMax(1, int(error.near.size()));
-    editor.SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, kErrorIndicator);
-    editor.SendScintilla(QsciScintilla::SCI_INDICATORFILLRANGE, start, length);
-    const long lineStart = editor.SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, line);
-    const long lineEnd = editor.SendScintilla(QsciScintilla::SCI_GETLINEENDPOSITION, line);
-    editor.SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, kErrorLineIndicator);
-    editor.SendScintilla(QsciScintilla::SCI_INDICATORFILLRANGE, lineStart, qMax(1L, lineEnd - lineStart));
-    editor.setCursorPosition(line, column);
-    editor.ensureLineVisible(line);
-    editor.setFocus();
-}
-
-void Sc750Debugger::clearError(editor::ProgramEditor& editor) {
-    editor.markerDeleteAll(kErrorMarker);
-    editor.clearAnnotations();
-    for (const int indicator : {kErrorIndicator, kErrorLineIndicator}) {
-        editor.SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, indicator);
-        editor.SendScintilla(QsciScintilla::SCI_INDICATORCLEARRANGE, 0, editor.length());
-    }
 }
 
 void Sc750Debugger::run() {
@@ -240,6 +184,18 @@ void Sc750Debugger::reset() {
         setState(m_state == State::NoProgram ? State::NoProgram : State::Loaded);
         markLine(0);
     });
+}
+
+void Sc750Debugger::adoptDriveStatus(const QString& payload) {
+    switch (payload.isEmpty() ? 'N' : payload.at(0).toLatin1()) {
+    case 'L': setState(State::Loaded); break;
+    case 'R': setState(State::Running); break;
+    case 'S': setState(State::Stopped); break;
+    case 'B': setState(State::AtBreakpoint); break;
+    case 'E': setState(State::Ended); break;
+    case 'F': setState(State::Faulted); break;
+    default: setState(State::NoProgram); break;
+    }
 }
 
 void Sc750Debugger::attachSession() {

@@ -4,6 +4,8 @@
 // them to the controller, and marks the line where the program stopped. Asynchronous; GUI thread only.
 #pragma once
 
+#include "sc750_editor_marks.h"
+
 #include "drive_core/sc750/sc750_compiler.h"
 
 #include <QObject>
@@ -25,13 +27,12 @@ class Sc750Debugger final : public QObject {
 public:
     enum class State { NoProgram, Downloading, Loaded, Running, Stopped, AtBreakpoint, Ended, Faulted };
 
-    // Editor marker numbers: diagnostics use 20-21, the BDS5 transfer 22-23; 24-25 are the current line
-    // (as DebugHighlighter), 26 the breakpoint dot.
-    static constexpr int kCurrentLineMarker = 24;
-    static constexpr int kArrowMarker = 25;
-    static constexpr int kBreakpointMarker = 26;
-    static constexpr int kErrorMarker = 20;
-    static constexpr int kMarkerMargin = 1;
+    // The editor's marks (sc750_editor_marks.h).
+    static constexpr int kCurrentLineMarker = kSc750CurrentLineMarker;
+    static constexpr int kArrowMarker = kSc750ArrowMarker;
+    static constexpr int kBreakpointMarker = kSc750BreakpointMarker;
+    static constexpr int kErrorMarker = kSc750ErrorMarker;
+    static constexpr int kMarkerMargin = kSc750MarkerMargin;
     static constexpr int kMaxBreakpoints = 10; // L2706
 
     explicit Sc750Debugger(Sc750Workspace& workspace);
@@ -61,6 +62,9 @@ public:
     QString lastError() const { return m_lastError; }
     const drive_core::sc750::CompileResult& lastCompile() const { return m_compiled; }
 
+    // The drive's own state from a status answer ("R,12,0,1,1"): on connecting, a program may be running
+    // already (AUTOSTART, L2814-L2829) and only Stop regains control.
+    void adoptDriveStatus(const QString& payload);
     // The session was created or dropped: wire its events.
     void attachSession();
     // Prepares an editor's margin for breakpoints and the current-line marks (once per editor).
@@ -77,8 +81,6 @@ private:
     void startProgram();
     void sendBreakpoints();
     void markLine(int line); // 1-based drive line; 0 clears
-    void showError(editor::ProgramEditor& editor, const drive_core::sc750::CompileError& error);
-    void clearError(editor::ProgramEditor& editor);
 
     Sc750Workspace& m_workspace;
     QPointer<editor::ProgramEditor> m_program; // the editor whose program is on the drive

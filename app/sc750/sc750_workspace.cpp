@@ -172,6 +172,7 @@ void Sc750Workspace::onOpened() {
         if (parts.size() >= 2) m_linkText = tr("SC%1, firmware %2").arg(parts[0], parts[1]);
         emit statusChanged();
     });
+    send('?', {}, [this](const serialport::Sc750Reply& reply) { m_debugger->adoptDriveStatus(reply.payload); });
     updateActions();
     emit statusChanged();
     emit message(tr("Connected to %1").arg(m_link->description()));
