@@ -3,6 +3,7 @@
 
 #include "sc750_debugger.h"
 #include "sc750_setup_dialog.h"
+#include "sc750_source_transfer.h"
 #include "sc750_workspace.h"
 
 #include "editor_area.h"
@@ -20,6 +21,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -34,6 +36,8 @@ Sc750ControllerMenu::Sc750ControllerMenu(Sc750Workspace& workspace, QWidget* par
     addSeparator();
     addAction(tr("&Axis Selection..."), this, &Sc750ControllerMenu::selectAxis);
     addAction(tr("Download &BIN File..."), this, &Sc750ControllerMenu::downloadBinFile);
+    addAction(tr("&Download Source File"), this, &Sc750ControllerMenu::downloadSource);
+    addAction(tr("U&pload Source File"), this, &Sc750ControllerMenu::uploadSource);
     addSeparator();
     addAction(tr("Controller &Set Up..."), this, &Sc750ControllerMenu::controllerSetUp);
     addAction(tr("&Unconfigure..."), this, &Sc750ControllerMenu::unconfigure);
@@ -89,6 +93,52 @@ void Sc750ControllerMenu::downloadBinFile() {
         m_workspace.debugger().downloadBin(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
     });
     dialog->open();
+}
+
+Sc750SourceTransfer* Sc750ControllerMenu::startTransfer(const QString& title) {
+    auto* transfer = new Sc750SourceTransfer(m_workspace);
+    auto* progress = new QProgressDialog(title, tr("Cancel"), 0, 0, &m_workspace.window());
+    progress->setWindowTitle(title);
+    progress->setAttribute(Qt::WA_DeleteOnClose);
+    progress->setMinimumDuration(0);
+    progress->setAutoClose(false);
+    progress->setAutoReset(false);
+    progress->open();
+    connect(progress, &QProgressDialog::canceled, transfer, &Sc750SourceTransfer::cancel);
+    connect(transfer, &Sc750SourceTransfer::progress, progress, [progress](qint64 done, qint64 total) {
+        progress->setMaximum(int(total)); // 0: busy, size unknown
+        progress->setValue(total ? int(done) : 0);
+        if (!total) progress->setLabelText(tr("%1 bytes read").arg(done));
+    });
+    connect(transfer, &Sc750SourceTransfer::finished, progress, &QWidget::close);
+    return transfer;
+}
+
+void Sc750ControllerMenu::downloadSource() {
+    const QByteArray text = m_workspace.window().editor()->text().toUtf8();
+    Sc750SourceTransfer* transfer = startTransfer(tr("Download Source File"));
+    connect(transfer, &Sc750SourceTransfer::finished, this, [this](bool ok, const QByteArray&, const QString& message) {
+        emit m_workspace.message(ok ? message : tr("Download Source File: %1").arg(message));
+    });
+    transfer->download(text);
+}
+
+void Sc750ControllerMenu::uploadSource() {
+    Sc750SourceTransfer* transfer = startTransfer(tr("Upload Source File"));
+    connect(transfer, &Sc750SourceTransfer::finished, this,
+            [this](bool ok, const QByteArray& bytes, const QString& message) {
+                if (!ok) {
+                    emit m_workspace.message(tr("Upload Source File: %1").arg(message));
+                    return;
+                }
+                // Into a new tab: the program in the editor is not overwritten.
+                EditorTabs* tabs = m_workspace.window().editorArea()->tabs();
+                editor::ProgramEditor* editor = tabs->addEditor(tabs->freeUntitledName(FileType::Sc750Program));
+                editor->setText(QString::fromUtf8(bytes));
+                tabs->refreshTab(editor);
+                emit m_workspace.message(tr("%1: %2 bytes").arg(message).arg(bytes.size()));
+            });
+    transfer->upload();
 }
 
 QWidget* Sc750ControllerMenu::controllerSetUp() {

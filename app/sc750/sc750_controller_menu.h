@@ -1,6 +1,6 @@
 // Sc750ControllerMenu: Motion Dialogue's Options and File items that belong to the SC750 (seed-sc750 §2.4,
-// §2.7): Create Program with the parameter header, Axis Selection, Download BIN File, Controller Set Up and
-// Unconfigure (two confirmations, typing "Yes", L2580-L2591). Port Configuration is Drive > Connect.
+// §2.7): Create Program with the parameter header, Axis Selection, Download BIN File, Download and Upload
+// Source File, Controller Set Up and Unconfigure (two confirmations, typing "Yes", L2580-L2591). Port Configuration is Drive > Connect.
 // Dialogs open without blocking. GUI thread only.
 #pragma once
 
@@ -8,6 +8,7 @@
 
 namespace app {
 
+class Sc750SourceTransfer;
 class Sc750Workspace;
 
 class Sc750ControllerMenu final : public QMenu {
@@ -25,9 +26,15 @@ public:
     // Options > Controller Set Up: the set-up dialog (Auto or Manual), then PARAMS, values and K1.
     QWidget* controllerSetUp();
 
+    // Options > Download / Upload Source File: the editor's text into the controller's NV memory, and
+    // the stored text back into a new tab.
+    void downloadSource();
+    void uploadSource();
+
 private:
     void selectAxis();
     void downloadBinFile();
+    Sc750SourceTransfer* startTransfer(const QString& title);
 
     Sc750Workspace& m_workspace;
 };

@@ -250,6 +250,23 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("KVP")), QStringLiteral(".043543"), kTimeoutMs);
     }
 
+    void sourceFileDownloadAndUpload() {
+        MainWindow window;
+        window.show();
+        // Longer than one 64-byte chunk, with the manual's typographic quotes (UTF-8 in the editor).
+        const QString program = example("03-time-wait.bas") + QStringLiteral("\u2018 comment\n").repeated(20);
+        Sc750Workspace& ws = connectSc750(window, program);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
+        menu->downloadSource();
+        QTRY_VERIFY_WITH_TIMEOUT(window.statusBar()->currentMessage().contains(QStringLiteral("Source stored")), kTimeoutMs);
+        auto* first = window.editor();
+        menu->uploadSource();
+        QTRY_VERIFY_WITH_TIMEOUT(window.editor() != first, kTimeoutMs);
+        QCOMPARE(window.editor()->text(), program);
+        QVERIFY(app::ServoBasicLanguage::of(*window.editor())); // a .bas tab
+    }
+
     void servoBasicEditing() {
         QCOMPARE(app::servoBasicWordStyle("go.vel"), app::BasicKeyword);
         QCOMPARE(app::servoBasicWordStyle("RUN.SPEED"), app::BasicVariable);
