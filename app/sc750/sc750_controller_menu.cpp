@@ -33,6 +33,7 @@ Sc750ControllerMenu::Sc750ControllerMenu(Sc750Workspace& workspace, QWidget* par
     : QMenu(tr("Co&ntroller"), parent), m_workspace(workspace) {
     setObjectName(QStringLiteral("sc750ControllerMenu"));
     addAction(tr("Create &Program"), this, &Sc750ControllerMenu::createProgram);
+    addAction(tr("&Edit Parameters..."), this, &Sc750ControllerMenu::editParameters);
     addSeparator();
     addAction(tr("&Axis Selection..."), this, &Sc750ControllerMenu::selectAxis);
     addAction(tr("Download &BIN File..."), this, &Sc750ControllerMenu::downloadBinFile);
@@ -144,6 +145,15 @@ void Sc750ControllerMenu::uploadSource() {
 QWidget* Sc750ControllerMenu::controllerSetUp() {
     auto* dialog = new Sc750SetupDialog(m_workspace, &m_workspace.window());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
+}
+
+QWidget* Sc750ControllerMenu::editParameters() {
+    auto* dialog = new Sc750SetupDialog(m_workspace, &m_workspace.window());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Edit Parameters"));
+    dialog->loadParams(m_workspace.window().editor()->text());
     dialog->open();
     return dialog;
 }

@@ -21,6 +21,9 @@ public:
     static QString boilerplate();
     // File > Create Program: a new .bas tab holding the boiler-plate.
     void createProgram();
+    // File > Edit Parameters (listed, never described, L331; our design): the set-up dialog in Manual
+    // mode holding the current program's PARAMS values.
+    QWidget* editParameters();
     // Options > Unconfigure: asks twice (the second time the user types "Yes"), then K0.
     QWidget* unconfigure();
     // Options > Controller Set Up: the set-up dialog (Auto or Manual), then PARAMS, values and K1.

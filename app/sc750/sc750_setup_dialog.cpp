@@ -103,6 +103,22 @@ void Sc750SetupDialog::fillAuto() {
     setManual(m_manual->isChecked());
 }
 
+void Sc750SetupDialog::loadParams(const QString& text) {
+    setManual(true);
+    static const QRegularExpression assignment(QStringLiteral("^\\s*([A-Za-z][A-Za-z0-9._]*)\\s*=\\s*([-+0-9.Ee]+)"));
+    bool inBlock = false;
+    for (const QString& line : text.split(QLatin1Char('\n'))) {
+        const QString word = line.simplified().toUpper();
+        if (word.startsWith(QLatin1String("PARAMS START"))) inBlock = true;
+        else if (word.startsWith(QLatin1String("PARAMS END"))) break;
+        else if (const auto m = assignment.match(line); inBlock && m.hasMatch())
+            for (int row = 0; row < m_table->rowCount(); ++row)
+                if (m_table->item(row, 0)->text().compare(m.captured(1), Qt::CaseInsensitive) == 0)
+                    m_table->item(row, 1)->setText(m.captured(2));
+    }
+    setStatus(tr("The program's PARAMS values: edit them, then OK."), false);
+}
+
 void Sc750SetupDialog::setManual(bool manual) {
     m_manual->setChecked(manual);
     m_auto->setChecked(!manual);

@@ -33,6 +33,8 @@ public:
     // Replaces the PARAMS block of text (or puts one at the top) with block.
     static QString withParams(const QString& text, const QString& block);
 
+    // File > Edit Parameters: Manual, with the values of text's PARAMS block where it has them.
+    void loadParams(const QString& text);
     void setManual(bool manual);
     void setGentle(bool gentle);
     QTableWidget* table() const { return m_table; }

@@ -7,7 +7,6 @@
 #include "editor/help_popup.h"
 #include "editor/program_editor.h"
 
-#include <Qsci/qsciapis.h>
 
 #include <QKeyEvent>
 
@@ -30,6 +29,19 @@ QString typeName(catalog::ValueType type) {
 bool isWordChar(QChar c) {
     return c.isLetterOrNumber() || c == QLatin1Char('.') || c == QLatin1Char('_') || c == QLatin1Char('$');
 }
+// Every catalog name, sorted: statements, functions, predefined variables and parameters.
+const QStringList& catalogNames() {
+    static const QStringList names = [] {
+        QStringList all;
+        for (const auto& s : catalog::statements()) all << str(s.name);
+        for (const auto& f : catalog::functions()) all << str(f.name);
+        for (const auto& v : catalog::variables()) all << str(v.name);
+        all.sort();
+        all.removeDuplicates();
+        return all;
+    }();
+    return names;
+}
 } // namespace
 
 ServoBasicLanguage* ServoBasicLanguage::install(editor::ProgramEditor& editor) {
@@ -48,7 +60,6 @@ void ServoBasicLanguage::uninstall(editor::ProgramEditor& editor) {
         editor.setLexer(nullptr);
         language->m_lexer->deleteLater();
     }
-    editor.setAutoCompletionSource(QsciScintilla::AcsNone);
     delete language;
 }
 
@@ -56,15 +67,10 @@ ServoBasicLanguage::ServoBasicLanguage(editor::ProgramEditor& editor)
     : QObject(&editor), m_editor(editor), m_lexer(new ServoBasicLexer), m_help(new editor::HelpPopup(&editor)) {
     m_editor.setLanguageLexer(m_lexer);
     m_lexer->applyStyles(m_editor.font());
-    auto* apis = new QsciAPIs(m_lexer);
-    for (const auto& s : catalog::statements()) apis->add(str(s.name));
-    for (const auto& f : catalog::functions()) apis->add(str(f.name));
-    for (const auto& v : catalog::variables()) apis->add(str(v.name));
-    apis->prepare();
-    m_editor.setAutoCompletionSource(QsciScintilla::AcsAPIs);
-    m_editor.setAutoCompletionThreshold(2);
-    m_editor.setAutoCompletionCaseSensitivity(false);
-    m_editor.setAutoCompletionWordSeparators({QStringLiteral(".")});
+    connect(&m_editor, &QsciScintilla::SCN_CHARADDED, this, [this](int) {
+        if (wordBeforeCursor().size() >= kCompletionMinLetters) showCompletions();
+    });
+    connect(&m_editor, &QsciScintilla::userListActivated, this, &ServoBasicLanguage::completionChosen);
     m_editor.installEventFilter(this);
 }
 
@@ -108,6 +114,35 @@ QString ServoBasicLanguage::wordAtCursor() const {
     return text.mid(start, end - start);
 }
 
+QString ServoBasicLanguage::wordBeforeCursor() const {
+    int line = 0, index = 0;
+    m_editor.getCursorPosition(&line, &index);
+    const QString text = m_editor.text(line).left(index);
+    if (text.contains(QLatin1Char('\'')) || text.count(QLatin1Char('"')) % 2 == 1) return {}; // comment, string
+    int start = int(text.size());
+    while (start > 0 && isWordChar(text[start - 1])) --start;
+    return text.mid(start);
+}
+
+bool ServoBasicLanguage::showCompletions() {
+    const QString typed = wordBeforeCursor();
+    QStringList matches;
+    for (const QString& name : catalogNames())
+        if (name.startsWith(typed, Qt::CaseInsensitive) && name.compare(typed, Qt::CaseInsensitive) != 0) matches << name;
+    if (matches.isEmpty()) return false;
+    m_editor.showUserList(kCompletionListId, matches);
+    return true;
+}
+
+void ServoBasicLanguage::completionChosen(int id, const QString& text) {
+    if (id != kCompletionListId) return;
+    const long length = long(wordBeforeCursor().toUtf8().size());
+    const long start = m_editor.SendScintilla(QsciScintilla::SCI_GETCURRENTPOS) - length;
+    m_editor.SendScintilla(QsciScintilla::SCI_DELETERANGE, static_cast<unsigned long>(start), length);
+    m_editor.insert(text);
+    m_editor.SendScintilla(QsciScintilla::SCI_GOTOPOS, static_cast<unsigned long>(start + long(text.toUtf8().size())));
+}
+
 QString ServoBasicLanguage::showHelpAtCursor() {
     const QString word = wordAtCursor();
     if (word.isEmpty()) {
@@ -146,7 +181,7 @@ bool ServoBasicLanguage::eventFilter(QObject* watched, QEvent* event) {
             return true;
         } else if (complete) {
             hideHelp();
-            m_editor.autoCompleteFromAPIs();
+            showCompletions();
             return true;
         } else {
             hideHelp();

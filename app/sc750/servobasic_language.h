@@ -32,6 +32,13 @@ public:
     // F1: shows the help for the word at the cursor. Returns the word (empty: nothing shown).
     QString showHelpAtCursor();
     void hideHelp();
+    // The catalog names that start with the word before the cursor, as Scintilla's list (Ctrl+Space, or
+    // after two letters). False when none.
+    bool showCompletions();
+    QString wordBeforeCursor() const;
+
+    static constexpr int kCompletionListId = 52; // showUserList id (the BDS5's is 51)
+    static constexpr int kCompletionMinLetters = 2;
     editor::HelpPopup* helpPopup() const { return m_help; }
 
 protected:
@@ -39,6 +46,7 @@ protected:
 
 private:
     explicit ServoBasicLanguage(editor::ProgramEditor& editor);
+    void completionChosen(int id, const QString& text);
 
     editor::ProgramEditor& m_editor;
     ServoBasicLexer* m_lexer;

@@ -7,12 +7,16 @@
 
 #include "editor/outline_dock.h"
 #include "editor/program_editor.h"
+#include "sc750/sc750_controller_menu.h"
 #include "sc750/sc750_debugger.h"
 #include "sc750/sc750_output_dock.h"
 #include "sc750/sc750_variables_dock.h"
 #include "sc750/sc750_workspace.h"
 
+#include <QDialog>
+#include <QLabel>
 #include <QPointer>
+#include <QTableWidget>
 
 #include <memory>
 
@@ -103,6 +107,20 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))->grab(); },
                      .cleanUp = [&window] {
                          if (auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))) dialog->close();
+                     }});
+    steps.push_back({.name = QStringLiteral("sc750-controller-setup"),
+                     .act = [&window] {
+                         auto* menu = qobject_cast<Sc750ControllerMenu*>(sc750(window)->menus().at(1));
+                         menu->controllerSetUp();
+                     },
+                     .ready = [&window] {
+                         auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"));
+                         return dialog && dialog->isVisible() && dialog->findChild<QLabel*>() &&
+                                !dialog->findChild<QTableWidget*>()->findItems(QStringLiteral("KVP"), Qt::MatchExactly).isEmpty();
+                     },
+                     .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"))->grab(); },
+                     .cleanUp = [&window] {
+                         if (auto* dialog = window.findChild<QDialog*>(QStringLiteral("sc750SetupDialog"))) dialog->reject();
                      }});
     steps.push_back({.name = QStringLiteral("sc750-compile-error"),
                      .act = [&window, demo] {

@@ -248,6 +248,13 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(configured(), QStringLiteral("1"), kTimeoutMs);
         ws.variablesDock()->readVariable(QStringLiteral("KVP"));
         QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("KVP")), QStringLiteral(".043543"), kTimeoutMs);
+
+        // Edit Parameters: Manual, holding the program's values.
+        auto* edit = qobject_cast<app::Sc750SetupDialog*>(menu->editParameters());
+        QVERIFY(edit);
+        QVERIFY(edit->paramsBlock().contains(QStringLiteral("KVP = 0.043543")));
+        QVERIFY(edit->table()->item(0, 1)->flags() & Qt::ItemIsEditable);
+        edit->close();
     }
 
     void sourceFileDownloadAndUpload() {
@@ -290,6 +297,15 @@ private slots:
         window.editor()->setCursorPosition(0, 3);
         QCOMPARE(language->showHelpAtCursor(), QStringLiteral("GO.VEL"));
         QVERIFY(language->helpPopup()->isVisible());
+        // Completion from the catalog: "GO.V" offers GO.VEL.
+        window.editor()->setText(QStringLiteral("go.v"));
+        window.editor()->setCursorPosition(0, 4);
+        QVERIFY(language->showCompletions());
+        QVERIFY(window.editor()->isListActive());
+        window.editor()->SendScintilla(QsciScintilla::SCI_AUTOCCOMPLETE);
+        QCOMPARE(window.editor()->text(), QStringLiteral("GO.VEL"));
+        window.editor()->setText(QStringLiteral("GO.VEL\n"));
+        window.editor()->setCursorPosition(0, 3);
         auto* label = window.statusBar()->findChild<QLabel*>(QStringLiteral("sc750CursorLabel"));
         QVERIFY(label);
         QTRY_COMPARE(label->text(), QStringLiteral("Axis 255  Line 0001 Col 04")); // updated on Scintilla's UI update
