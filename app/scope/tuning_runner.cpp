@@ -33,14 +33,14 @@ TuningRunner::TuningRunner(DriveConnection& connection, QObject* parent) : QObje
     qRegisterMetaType<TuningRun>();
 }
 
-quint64 TuningRunner::send(const QString& line) {
+quint64 TuningRunner::send(const QString& line, serialport::Bds5Session::Echo echo) {
     serialport::Bds5Session* session = m_connection.session();
     if (!session || !m_connection.isConnected()) {
         emit message(tr("Not connected to a drive: use Drive > Connect."));
         return 0;
     }
     connect(session, &serialport::Bds5Session::finished, this, &TuningRunner::onAnswer, Qt::UniqueConnection);
-    return session->send(line);
+    return session->send(line, echo);
 }
 
 void TuningRunner::setGain(const QString& name, int value) {
@@ -52,8 +52,10 @@ void TuningRunner::setGain(const QString& name, int value) {
 }
 
 void TuningRunner::readGains() {
-    m_readId = send(QStringLiteral("P ") + kNumericGains.join(QLatin1Char(' ')));
-    m_readSwitchesId = send(QStringLiteral("P ") + kSwitches.join(QLatin1Char(' ')));
+    // Background reads (on connecting, after TUNE): out of the terminal, like the variable browser's polls.
+    const auto quiet = serialport::Bds5Session::Echo::Quiet;
+    m_readId = send(QStringLiteral("P ") + kNumericGains.join(QLatin1Char(' ')), quiet);
+    m_readSwitchesId = send(QStringLiteral("P ") + kSwitches.join(QLatin1Char(' ')), quiet);
 }
 
 void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response) {

@@ -70,7 +70,8 @@ private:
     void startRun();
     void onRecorded(const serialport::Bds5TransferResult& result);
     void onAnswer(quint64 id, const serialport::Bds5Response& response);
-    quint64 send(const QString& line);
+    quint64 send(const QString& line,
+                 serialport::Bds5Session::Echo echo = serialport::Bds5Session::Echo::Shown);
 
     DriveConnection& m_connection;
     TestMove m_move;

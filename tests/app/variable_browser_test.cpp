@@ -145,8 +145,8 @@ private slots:
 
         // The polls stay out of the terminal: it shows the edit the user made, not the browser's reads.
         const QString terminal = window.terminal()->text();
-        QVERIFY2(terminal.contains(QStringLiteral("X1=1234")), qPrintable(terminal.right(400)));
-        QVERIFY2(!terminal.contains(QStringLiteral("P VMAX")) && !terminal.contains(QStringLiteral("P X1 ")),
+        QVERIFY2(terminal.contains(QStringLiteral("-->X1 1234")), qPrintable(terminal.right(400)));
+        QVERIFY2(!terminal.contains(QStringLiteral("VMAX")) && !terminal.contains(QStringLiteral("P KP")),
                  qPrintable(terminal.right(400)));
     }
 
