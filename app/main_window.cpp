@@ -23,6 +23,7 @@
 #include "io/io_panel.h"
 #include "variables/variables_dock.h"
 #include "sc750/sc750_workspace.h"
+#include "pmc960/pmc960_workspace.h"
 #include "wizard/setup_wizard.h"
 
 #include "editor/diagnostics_status.h"
@@ -63,6 +64,7 @@ MainWindow::MainWindow(QWidget* parent)
     createStatusBar();
     wireConnection();
     addWorkspace(new Sc750Workspace(*this)); // issue 8: Motion Dialogue for the SC750
+    addWorkspace(new Pmc960Workspace(*this)); // issue 9: MPL menu, status panel, parameter table
     connect(m_documents, &DocumentController::documentChanged, this, &MainWindow::updateTitle);
     connect(m_documents, &DocumentController::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });

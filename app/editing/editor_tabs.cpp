@@ -2,6 +2,7 @@
 #include "editor_tabs.h"
 
 #include "editor/bds5_language.h"
+#include "pmc960/mpl_language.h"
 #include "editor/program_editor.h"
 
 #include <QFileInfo>
@@ -120,17 +121,24 @@ void EditorTabs::refreshTab(editor::ProgramEditor* editor) {
 }
 
 void EditorTabs::applyLexer(editor::ProgramEditor* editor, FileType type) {
-    // Programs and variable sets are BDS5 text; captures and other files are shown plain.
-    const int wanted = (type == FileType::Program || type == FileType::Variables) ? 1 : 0;
+    // Programs and variable sets are BDS5 text, .mpl files MPL; captures and other files are shown plain.
+    enum Language { Plain = 0, Bds5 = 1, Mpl = 2 };
+    const int wanted = (type == FileType::Program || type == FileType::Variables) ? Bds5
+                       : type == FileType::MplProgram                            ? Mpl
+                                                                                 : Plain;
     if (editor->property(kTypeProperty).toInt() == wanted) return;
     editor->setProperty(kTypeProperty, wanted);
-    if (wanted) {
+    QsciLexer* old = editor->lexer();
+    editor::Bds5Language::uninstall(*editor);
+    MplLanguage::uninstall(*editor);
+    if (wanted == Bds5) {
         editor::Bds5Language::install(*editor); // lexer, folding, diagnostics, completion, F1 help
-    } else if (QsciLexer* old = editor->lexer()) {
-        editor::Bds5Language::uninstall(*editor);
+    } else if (wanted == Mpl) {
+        MplLanguage::install(*editor); // MPL lexer, folding, program check, F1 help (issue 9)
+    } else {
         editor->setLexer(nullptr);
-        old->deleteLater();
     }
+    if (old && old != editor->lexer()) old->deleteLater();
 }
 
 } // namespace app

@@ -19,6 +19,7 @@ QString filterFor(FileType type) {
     case FileType::Variables: return tr("Variable sets (*.var *.VAR)");
     case FileType::Capture: return tr("Captured communications (*.cap *.CAP)");
     case FileType::Sc750Program: return tr("ServoBASIC programs (*.bas *.BAS)");
+    case FileType::MplProgram: return tr("PMC-960 MPL programs (*.mpl *.MPL)");
     case FileType::Other: break;
     }
     return tr("All files (*)");
@@ -31,12 +32,14 @@ FileType fileTypeOf(const QString& path) {
     if (suffix == QLatin1String("var")) return FileType::Variables;
     if (suffix == QLatin1String("cap")) return FileType::Capture;
     if (suffix == QLatin1String("bas")) return FileType::Sc750Program;
+    if (suffix == QLatin1String("mpl")) return FileType::MplProgram;
     return FileType::Other;
 }
 
 QString fileTypeIcon(FileType type) {
     switch (type) {
-    case FileType::Program: return resources::kProgramFileIcon;
+    case FileType::Program:
+    case FileType::MplProgram: return resources::kProgramFileIcon;
     case FileType::Sc750Program: return resources::kProgramFileIcon;
     case FileType::Variables: return resources::kVariableFileIcon;
     case FileType::Capture: return resources::kCaptureFileIcon;
@@ -51,6 +54,7 @@ QString fileTypeName(FileType type) {
     case FileType::Variables: return tr("Variable set");
     case FileType::Capture: return tr("Captured communications");
     case FileType::Sc750Program: return tr("ServoBASIC program");
+    case FileType::MplProgram: return tr("PMC-960 MPL program");
     case FileType::Other: break;
     }
     return tr("Text file");
@@ -62,6 +66,7 @@ QString defaultSuffix(FileType type) {
     case FileType::Variables: return QStringLiteral("var");
     case FileType::Capture: return QStringLiteral("cap");
     case FileType::Sc750Program: return QStringLiteral("bas");
+    case FileType::MplProgram: return QStringLiteral("mpl");
     case FileType::Other: break;
     }
     return QString();
@@ -75,12 +80,13 @@ QString untitledName(FileType type) {
 QString openFilter() {
     return tr("Motion Link files (*.bds *.var *.cap *.BDS *.VAR *.CAP)") + QStringLiteral(";;") +
            filterFor(FileType::Program) + QStringLiteral(";;") + filterFor(FileType::Variables) + QStringLiteral(";;") +
-           filterFor(FileType::Capture) + QStringLiteral(";;") + filterFor(FileType::Sc750Program) + QStringLiteral(";;") + filterFor(FileType::Other);
+           filterFor(FileType::Capture) + QStringLiteral(";;") + filterFor(FileType::Sc750Program) + QStringLiteral(";;") + filterFor(FileType::MplProgram) + QStringLiteral(";;") +
+           filterFor(FileType::Other);
 }
 
 QString saveFilter(FileType type) {
     QStringList filters{filterFor(type)};
-    for (FileType other : {FileType::Program, FileType::Variables, FileType::Capture, FileType::Sc750Program, FileType::Other})
+    for (FileType other : {FileType::Program, FileType::Variables, FileType::Capture, FileType::Sc750Program, FileType::MplProgram, FileType::Other})
         if (other != type) filters << filterFor(other);
     return filters.join(QStringLiteral(";;"));
 }

@@ -6,8 +6,9 @@
 
 namespace app {
 
+// MplProgram: a PMC-960 MPL program (.mpl, issue 9).
 // Sc750Program: a ServoBASIC Plus program for the SC750 (.bas, issue 8).
-enum class FileType { Program, Variables, Capture, Sc750Program, Other };
+enum class FileType { Program, Variables, Capture, Sc750Program, MplProgram, Other };
 
 // By extension, case-insensitively; anything unknown is Other (still opened as text).
 FileType fileTypeOf(const QString& path);

@@ -1,0 +1,171 @@
+// Pmc960Workspace: link and session lifetime, the MPL menu, and the docks that follow the session.
+#include "pmc960_workspace.h"
+
+#include "pmc960_parameter_dock.h"
+#include "pmc960_program_transfer.h"
+#include "pmc960_status_dock.h"
+
+#include "main_window.h"
+
+#include <QMenu>
+#include <QProgressDialog>
+
+namespace app {
+
+namespace {
+constexpr char kEsc = '\x1b';
+}
+
+Pmc960Workspace::Pmc960Workspace(MainWindow& window)
+    : FamilyWorkspace(&window), m_window(window), m_transfer(new Pmc960ProgramTransfer(*this)),
+      m_status(new Pmc960StatusDock(&window)), m_parameters(new Pmc960ParameterDock(&window)),
+      m_menu(new QMenu(tr("&MPL"), &window)) {
+    m_menu->setObjectName(QStringLiteral("mplMenu"));
+    QAction* download = m_menu->addAction(tr("&Download Program"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
+                                          [this] { m_transfer->download(m_window.editor()); });
+    download->setStatusTip(tr("Write the current editor's program to the PMC-960's program buffer, verified by "
+                              "the communications checksum"));
+    QAction* upload = m_menu->addAction(tr("&Upload Program"), QKeySequence(Qt::SHIFT | Qt::Key_F6), m_transfer,
+                                        &Pmc960ProgramTransfer::upload);
+    upload->setStatusTip(tr("Read the PMC-960's program buffer into a new tab"));
+    m_menu->addSeparator();
+    QAction* stopAction = m_menu->addAction(tr("&Stop"), QKeySequence(tr("Ctrl+Alt+X")), this, &Pmc960Workspace::stop);
+    stopAction->setStatusTip(tr("Send ESC: abort the running program, wait or half-typed command"));
+    m_menu->addSeparator();
+    m_menu->addAction(m_status->toggleViewAction());
+    m_menu->addAction(m_parameters->toggleViewAction());
+
+    connect(m_transfer, &Pmc960ProgramTransfer::busyChanged, this, [this](bool busy) {
+        m_status->setPaused(busy);
+        m_parameters->setPaused(busy);
+        updateActions();
+        emit busyChanged(busy);
+    });
+    updateActions();
+}
+
+Pmc960Workspace::~Pmc960Workspace() {
+    // The docks belong to the window and may outlive the session: let go of it first.
+    blockSignals(true); // the window is going: no status updates from the link closing
+    if (m_link) m_link->disconnect(this);
+    if (m_session) m_session->disconnect(this);
+    m_status->setSession(nullptr);
+    m_parameters->setSession(nullptr);
+}
+
+QList<QMenu*> Pmc960Workspace::menus() const {
+    return {m_menu};
+}
+
+QList<QDockWidget*> Pmc960Workspace::docks() const {
+    return {m_status, m_parameters};
+}
+
+QAction* Pmc960Workspace::action(const QString& text) const {
+    for (QAction* a : m_menu->actions()) {
+        QString plain = a->text();
+        plain.remove(QLatin1Char('&')).remove(QStringLiteral("..."));
+        if (plain == text) return a;
+    }
+    return nullptr;
+}
+
+void Pmc960Workspace::activate(const ConnectionChoice& choice) {
+    deactivate();
+    m_link = choice.makeLink();
+    m_linkText = m_link->description();
+    m_session = std::make_unique<serialport::Pmc960Session>(*m_link);
+    connect(m_link.get(), &serialport::Link::opened, this, &Pmc960Workspace::onOpened);
+    connect(m_link.get(), &serialport::Link::errorOccurred, this, &Pmc960Workspace::onLinkError);
+    connect(m_link.get(), &serialport::Link::closed, this, [this] {
+        if (!m_connected) return;
+        m_connected = false;
+        m_status->setSession(nullptr);
+        m_parameters->setSession(nullptr);
+        updateActions();
+        emit statusChanged();
+    });
+    connect(m_session.get(), &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
+    connect(m_session.get(), &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
+        emit message(tr("PMC-960: %1").arg(Pmc960ProgramTransfer::describeError(code)));
+    });
+    m_link->open();
+    if (m_link->isOpen() && !m_connected) onOpened();
+}
+
+void Pmc960Workspace::onOpened() {
+    if (m_connected) return;
+    m_connected = true;
+    m_status->setSession(m_session.get());
+    m_parameters->setSession(m_session.get());
+    updateActions();
+    emit statusChanged();
+    emit message(tr("Connected to %1").arg(m_linkText));
+    // The first connection shows the status panel, so the user sees the controller at once.
+    if (!m_status->isVisible()) m_status->show();
+}
+
+void Pmc960Workspace::onLinkError(const QString& text) {
+    emit message(tr("PMC-960 link: %1").arg(text));
+    if (m_link && !m_link->isOpen() && m_connected) {
+        m_connected = false;
+        m_status->setSession(nullptr);
+        m_parameters->setSession(nullptr);
+        updateActions();
+        emit statusChanged();
+    }
+}
+
+void Pmc960Workspace::deactivate() {
+    const bool was = m_connected || m_link;
+    m_connected = false;
+    m_status->setSession(nullptr);
+    m_parameters->setSession(nullptr);
+    if (m_session) m_session->disconnect(this);
+    if (m_link) {
+        m_link->disconnect(this);
+        m_link->close();
+    }
+    m_session.reset();
+    m_link.reset();
+    updateActions();
+    if (was) emit statusChanged();
+}
+
+bool Pmc960Workspace::isConnected() const {
+    return m_connected;
+}
+
+QString Pmc960Workspace::statusText() const {
+    if (!m_link) return tr("PMC-960: not connected");
+    if (!m_connected) return tr("PMC-960 on %1: connecting\u2026").arg(m_linkText);
+    using State = serialport::Pmc960Session::State;
+    QString state;
+    switch (m_session->state()) {
+    case State::Closed: state = tr("closed"); break;
+    case State::WaitingForPrompt: state = tr("waiting for the prompt"); break;
+    case State::Ready: state = tr("Ready"); break;
+    case State::Busy: state = tr("Busy"); break;
+    }
+    return tr("PMC-960 axis %1 on %2, %3").arg(QChar(m_session->axisId())).arg(m_linkText, state);
+}
+
+void Pmc960Workspace::stop() {
+    if (!m_connected) return;
+    if (m_transfer->isBusy() && m_transfer->progressDialog()) {
+        m_transfer->progressDialog()->cancel(); // the download leaves the editor and protects the buffer
+        return;
+    }
+    m_session->cancelPending();
+    m_link->write(QByteArray(1, kEsc));
+    emit message(tr("Stop: ESC sent to the PMC-960"));
+}
+
+void Pmc960Workspace::updateActions() {
+    const bool ready = m_connected && !m_transfer->isBusy();
+    for (const QString& text : {QStringLiteral("Download Program"), QStringLiteral("Upload Program")})
+        if (QAction* a = action(text)) a->setEnabled(ready);
+    if (QAction* a = action(QStringLiteral("Stop"))) a->setEnabled(m_connected);
+}
+
+} // namespace app

@@ -1,0 +1,72 @@
+// Pmc960Workspace: the ORMEC PMC-960 inside ServoDesk (issue 9). Owns the PMC-960 link and its
+// Pmc960Session while connected, the MPL menu (download and upload of the program buffer, Stop), the
+// status panel and the parameter table. Shown by the main window while the PMC-960 is the chosen family;
+// MPL editing itself (.mpl tabs) is MplLanguage's. GUI thread only.
+#pragma once
+
+#include "family_workspace.h"
+
+#include "serialport/pmc960_session.h"
+
+#include <memory>
+
+class QAction;
+
+namespace app {
+
+class MainWindow;
+class Pmc960ParameterDock;
+class Pmc960ProgramTransfer;
+class Pmc960StatusDock;
+
+class Pmc960Workspace final : public FamilyWorkspace {
+    Q_OBJECT
+public:
+    explicit Pmc960Workspace(MainWindow& window);
+    ~Pmc960Workspace() override;
+
+    drive_core::DriveFamily family() const override { return drive_core::DriveFamily::Pmc960; }
+    QList<QMenu*> menus() const override;
+    QList<QDockWidget*> docks() const override;
+    void activate(const ConnectionChoice& choice) override;
+    void deactivate() override;
+    bool isConnected() const override;
+    QString statusText() const override;
+
+    // The session while the link is open, else nullptr.
+    serialport::Pmc960Session* session() const { return m_connected ? m_session.get() : nullptr; }
+    // The link while connected (the simulator's bench for the tour and tests), else nullptr.
+    serialport::Link* link() const { return m_connected ? m_link.get() : nullptr; }
+    MainWindow& window() const { return m_window; }
+    Pmc960ProgramTransfer& transfer() const { return *m_transfer; }
+    Pmc960StatusDock* statusDock() const { return m_status; }
+    Pmc960ParameterDock* parameterDock() const { return m_parameters; }
+    QMenu* menu() const { return m_menu; }
+    // Every MPL menu action by its text without '&' and "...": "Download Program", "Stop".
+    QAction* action(const QString& text) const;
+
+    // Stop: ESC to the controller at once (ahead of anything queued), which aborts a running program, a
+    // wait or a half-typed command (digest §4.6); queued commands are dropped.
+    void stop();
+
+signals:
+    // A transfer started or ended: docks leave the line alone while the program buffer is written.
+    void busyChanged(bool busy);
+
+private:
+    void onOpened();
+    void onLinkError(const QString& text);
+    void updateActions();
+
+    MainWindow& m_window;
+    std::unique_ptr<serialport::Link> m_link;
+    std::unique_ptr<serialport::Pmc960Session> m_session;
+    Pmc960ProgramTransfer* m_transfer;
+    Pmc960StatusDock* m_status;
+    Pmc960ParameterDock* m_parameters;
+    QMenu* m_menu;
+    QString m_linkText;
+    bool m_connected = false;
+};
+
+} // namespace app

@@ -1,0 +1,209 @@
+// The PMC-960 workspace in the real MainWindow against the simulated controller (issue 9): the MPL menu
+// replaces the BDS5's; a manual example downloads with its checksum verified and uploads unchanged; a
+// program too big for the buffer gets the controller's #C1 with its line; the status panel follows a move;
+// the parameter table shows stored vs in-use values and an edit reaches the controller; .mpl tabs use MPL.
+#include "app/main_window.h"
+#include "app/pmc960/mpl_language.h"
+#include "app/pmc960/pmc960_parameter_dock.h"
+#include "app/pmc960/pmc960_program_transfer.h"
+#include "app/pmc960/pmc960_status_dock.h"
+#include "app/pmc960/pmc960_workspace.h"
+
+#include "drive_core/catalog/pmc960_catalog.h"
+#include "editor/help_popup.h"
+#include "editor/mpl_lexer.h"
+#include "editor/program_editor.h"
+#include "document_controller.h"
+#include "editor_area.h"
+#include "editor_tabs.h"
+
+#include <QAction>
+#include <QFile>
+#include <QMenuBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using app::MainWindow;
+using app::Pmc960Workspace;
+using drive_core::DriveFamily;
+
+namespace {
+constexpr int kTimeoutMs = 20000;
+
+QString example(const char* name) {
+    QFile file(QStringLiteral(PMC960_EXAMPLES "/") + QLatin1String(name));
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+}
+
+bool menuVisible(const MainWindow& window, const QString& title) {
+    for (QAction* a : window.menuBar()->actions())
+        if (a->text() == title) return a->isVisible();
+    return false;
+}
+
+Pmc960Workspace& connectPmc960(MainWindow& window) {
+    window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
+    return *static_cast<Pmc960Workspace*>(window.workspace(DriveFamily::Pmc960));
+}
+
+editor::ProgramEditor* newMplTab(MainWindow& window, const QString& name, const QString& text) {
+    editor::ProgramEditor* e = window.editorArea()->tabs()->addEditor(name);
+    e->setText(text);
+    return e;
+}
+} // namespace
+
+class Pmc960WorkspaceTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskPmc960WorkspaceTest"));
+        QSettings().clear();
+        qRegisterMetaType<serialport::Pmc960DownloadResult>();
+        qRegisterMetaType<editor::ProgramEditor*>();
+    }
+
+    void connectingShowsTheMplMenu() {
+        MainWindow window;
+        window.show();
+        QVERIFY(!menuVisible(window, QStringLiteral("&MPL")));
+        QVERIFY(menuVisible(window, QStringLiteral("&Program")));
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        QVERIFY(menuVisible(window, QStringLiteral("&MPL")));
+        QVERIFY(!menuVisible(window, QStringLiteral("&Program")));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+        QVERIFY(ws.statusDock()->isVisible());
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Bds5));
+        QVERIFY(!ws.isConnected());
+        QVERIFY(!menuVisible(window, QStringLiteral("&MPL")));
+        QVERIFY(!ws.statusDock()->isVisible());
+    }
+
+    void downloadIsVerifiedAndUploadsTheSame() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        const QString program = example("14-loop-reset-program-G-W.mpl");
+        QVERIFY(!program.isEmpty());
+        newMplTab(window, QStringLiteral("loop.mpl"), program);
+        QVERIFY(app::MplLanguage::of(window.editor())); // .mpl: the MPL lexer
+        QSignalSpy downloaded(&ws.transfer(), &app::Pmc960ProgramTransfer::downloadFinished);
+        ws.action(QStringLiteral("Download Program"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(downloaded.count(), 1, kTimeoutMs);
+        const auto result = downloaded.at(0).at(0).value<serialport::Pmc960DownloadResult>();
+        QVERIFY2(result.ok, qPrintable(result.reason));
+        QCOMPARE(result.hostChecksum, result.driveChecksum);
+        QVERIFY(ws.transfer().lastMessage().contains(QStringLiteral("verified")));
+
+        QSignalSpy uploaded(&ws.transfer(), &app::Pmc960ProgramTransfer::uploadFinished);
+        ws.action(QStringLiteral("Upload Program"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(uploaded.count(), 1, kTimeoutMs);
+        QVERIFY(uploaded.at(0).at(0).toBool());
+        auto* tab = uploaded.at(0).at(1).value<editor::ProgramEditor*>();
+        QVERIFY(tab);
+        QCOMPARE(tab->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts),
+                 serialport::Pmc960Download::programLines(program));
+        QVERIFY(app::MplLanguage::of(tab));
+    }
+
+    void aProgramTooBigGetsTheControllersErrorAndLine() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        QString big = QStringLiteral("@A\n\n");
+        for (int i = 0; i < 200; ++i) big += QStringLiteral("@.0123456789\n");
+        newMplTab(window, QStringLiteral("big.mpl"), big);
+        QSignalSpy downloaded(&ws.transfer(), &app::Pmc960ProgramTransfer::downloadFinished);
+        ws.transfer().download(window.editor());
+        QTRY_COMPARE_WITH_TIMEOUT(downloaded.count(), 1, 60000);
+        const auto result = downloaded.at(0).at(0).value<serialport::Pmc960DownloadResult>();
+        QVERIFY(!result.ok);
+        QCOMPARE(result.error, 0xC1);
+        const int line = downloaded.at(0).at(1).toInt();
+        QVERIFY(line > 100);
+        QVERIFY(ws.transfer().lastMessage().contains(QStringLiteral("#C1")));
+        QVERIFY(ws.transfer().lastMessage().contains(QStringLiteral("line %1").arg(line)));
+        int cursorLine = 0, index = 0;
+        window.editor()->getCursorPosition(&cursorLine, &index);
+        QCOMPARE(cursorLine + 1, line);
+    }
+
+    void statusPanelFollowsAMove() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::Pmc960StatusDock* status = ws.statusDock();
+        QTRY_COMPARE_WITH_TIMEOUT(status->value(QStringLiteral("position")), QStringLiteral("0"), kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(status->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")), kTimeoutMs);
+        status->sendCommand(QStringLiteral("SM2"));
+        status->sendCommand(QStringLiteral("OB5:F"));
+        status->sendCommand(QStringLiteral("I4000+"));
+        QTRY_VERIFY_WITH_TIMEOUT(status->value(QStringLiteral("position")).toInt() > 0, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(status->value(QStringLiteral("position")), QStringLiteral("4000"), kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(status->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM2")), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(status->value(QStringLiteral("outputs")), QStringLiteral("0005"), kTimeoutMs);
+    }
+
+    void parameterTableShowsStoredAndInUseAndWrites() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::Pmc960ParameterDock* table = ws.parameterDock();
+        QCOMPARE(table->table()->rowCount(), int(drive_core::catalog::pmc960::parameters().size()));
+        QTRY_COMPARE_WITH_TIMEOUT(table->pendingReads(), 0, kTimeoutMs);
+        QCOMPARE(table->stored(QStringLiteral("TGP")), QStringLiteral("16"));
+        QCOMPARE(table->inUse(QStringLiteral("TGP")), QStringLiteral("16"));
+        QCOMPARE(table->stored(QStringLiteral("A")), QStringLiteral("4000")); // stored vs in use while still
+        QCOMPARE(table->inUse(QStringLiteral("A")), QStringLiteral("0"));
+        QCOMPARE(table->stored(QStringLiteral("THI")), QStringLiteral("="));
+
+        QVERIFY(!table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("300"))); // the catalog's limit
+        QVERIFY(table->message().contains(QStringLiteral("0 \u2013 255")));
+
+        QSignalSpy written(table, &app::Pmc960ParameterDock::writeFinished);
+        QVERIFY(table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("20")));
+        QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, kTimeoutMs);
+        QVERIFY(written.at(0).at(1).toBool());
+        QTRY_COMPARE_WITH_TIMEOUT(table->stored(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(table->inUse(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
+
+        // The controller's own refusal: TGF 200 overflows the 384 kHz range (#9C).
+        QVERIFY(table->setStoredValue(QStringLiteral("TGF"), QStringLiteral("200")));
+        QTRY_COMPARE_WITH_TIMEOUT(written.count(), 2, kTimeoutMs);
+        QVERIFY(!written.at(1).at(1).toBool());
+        QVERIFY2(table->message().contains(QStringLiteral("#9C")), qPrintable(table->message()));
+        QTRY_COMPARE_WITH_TIMEOUT(table->stored(QStringLiteral("TGF")), QStringLiteral("16"), kTimeoutMs);
+    }
+
+    void mplFilesGetMplHighlightingAndHelp() {
+        MainWindow window;
+        window.show();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("t.mpl"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("@T\nI+,\nLT9\nE\n");
+        file.close();
+        QVERIFY(window.editorArea()->documents()->openFile(path));
+        auto* language = app::MplLanguage::of(window.editor());
+        QVERIFY(language);
+        QVERIFY(qobject_cast<editor::MplLexer*>(window.editor()->lexer()));
+        window.editor()->setCursorPosition(2, 0);
+        QCOMPARE(language->showHelpAtCursor(), QStringLiteral("L"));
+        QVERIFY(language->helpPopup()->html().contains(QStringLiteral("LOOP"), Qt::CaseInsensitive));
+    }
+};
+
+QTEST_MAIN(Pmc960WorkspaceTest)
+#include "pmc960_workspace_test.moc"
