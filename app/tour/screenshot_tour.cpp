@@ -13,6 +13,7 @@
 #include "transfer_tour_steps.h"
 #include "scope_tour_steps.h"
 #include "sc750_tour_steps.h"
+#include "pmc960_tour_steps.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"
@@ -91,6 +92,7 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     for (Step& step : scopeTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : docksTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : sc750TourSteps(m_window)) steps.push_back(std::move(step)); // last: it switches family
+    for (Step& step : pmc960TourSteps(m_window)) steps.push_back(std::move(step)); // switches family too
     return steps;
 }
 

@@ -1,0 +1,120 @@
+// PMC-960 tour steps: connect, download a demo program, move, grab the editor and the two docks.
+#include "pmc960_tour_steps.h"
+
+#include "editor_area.h"
+#include "editor_tabs.h"
+#include "main_window.h"
+
+#include "editor/help_popup.h"
+#include "editor/program_editor.h"
+#include "pmc960/mpl_language.h"
+#include "pmc960/pmc960_parameter_dock.h"
+#include "pmc960/pmc960_program_transfer.h"
+#include "pmc960/pmc960_status_dock.h"
+#include "pmc960/pmc960_workspace.h"
+
+#include <QPointer>
+
+#include <memory>
+
+namespace app {
+
+namespace {
+// The manual's loop examples (13, 14) joined into one program, with a homing routine in front.
+const char* kDemo = R"(@.PMC-960 demo: index forward, back, repeat
+@H
+A3500
+V400
+OB1:1
+@G
+I4000+,
+BW1
+LG2999
+@W
+I,-
+LW19
+E
+)";
+
+Pmc960Workspace* pmc960(MainWindow& window) {
+    return static_cast<Pmc960Workspace*>(window.workspace(drive_core::DriveFamily::Pmc960));
+}
+} // namespace
+
+std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
+    std::vector<ScreenshotTour::Step> steps;
+    auto demo = std::make_shared<QPointer<editor::ProgramEditor>>();
+    auto downloaded = std::make_shared<bool>(false);
+    steps.push_back({.name = QStringLiteral("pmc960-connect"),
+                     .act = [&window, demo, downloaded] {
+                         window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Pmc960));
+                         *demo = window.editorArea()->tabs()->addEditor(QStringLiteral("index-demo.mpl"));
+                         (*demo)->setText(QString::fromLatin1(kDemo));
+                         QObject::connect(&pmc960(window)->transfer(), &Pmc960ProgramTransfer::downloadFinished,
+                                          &window, [downloaded] { *downloaded = true; });
+                     },
+                     .ready = [&window] {
+                         Pmc960Workspace* ws = pmc960(window);
+                         return ws->session() && ws->session()->state() == serialport::Pmc960Session::State::Ready &&
+                                ws->parameterDock()->pendingReads() == 0;
+                     }});
+    steps.push_back({.name = QStringLiteral("pmc960-download"),
+                     .act = [&window, demo] { pmc960(window)->transfer().download(*demo); },
+                     .ready = [downloaded] { return *downloaded; }});
+    steps.push_back({.name = QStringLiteral("mpl-editor"),
+                     .act = [demo] {
+                         if (!*demo) return;
+                         (*demo)->setFocus();
+                         (*demo)->setCursorPosition(6, 0); // I4000+,
+                         if (auto* language = MplLanguage::of(*demo)) language->showHelpAtCursor();
+                     },
+                     .ready = [demo] {
+                         auto* language = *demo ? MplLanguage::of(*demo) : nullptr;
+                         return language && language->helpPopup()->isVisible();
+                     },
+                     .grab = [&window] { return window.grab(); },
+                     .cleanUp = [demo] {
+                         if (auto* language = *demo ? MplLanguage::of(*demo) : nullptr) language->hideHelp();
+                     }});
+    steps.push_back({.name = QStringLiteral("pmc960-status"),
+                     .act = [&window] {
+                         Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         status->show();
+                         status->setFloating(true);
+                         status->resize(420, 560);
+                         status->sendCommand(QStringLiteral("SM2"));
+                         status->sendCommand(QStringLiteral("OB5:F"));
+                         status->sendCommand(QStringLiteral("V30")); // 3,000 counts/s: caught mid-move
+                         status->sendCommand(QStringLiteral("I12000+"));
+                     },
+                     .ready = [&window] {
+                         Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         const int position = status->value(QStringLiteral("position")).toInt();
+                         return position > 1000 && position < 11000 && status->value(QStringLiteral("velocity")).toInt() > 0 &&
+                                status->value(QStringLiteral("outputs")) == QLatin1String("0005");
+                     },
+                     .grab = [&window] { return pmc960(window)->statusDock()->grab(); },
+                     .cleanUp = [&window] { pmc960(window)->statusDock()->setFloating(false); }});
+    steps.push_back({.name = QStringLiteral("pmc960-parameters"),
+                     .act = [&window] {
+                         Pmc960ParameterDock* table = pmc960(window)->parameterDock();
+                         table->show();
+                         table->setFloating(true);
+                         table->resize(760, 600);
+                         table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("24"));
+                     },
+                     .ready = [&window] {
+                         Pmc960ParameterDock* table = pmc960(window)->parameterDock();
+                         return table->pendingReads() == 0 && table->stored(QStringLiteral("TGP")) == QLatin1String("24");
+                     },
+                     .grab = [&window] { return pmc960(window)->parameterDock()->grab(); },
+                     .cleanUp = [&window, demo] {
+                         Pmc960Workspace* ws = pmc960(window);
+                         ws->parameterDock()->setFloating(false);
+                         if (*demo) (*demo)->setModified(false);
+                         window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
+                     }});
+    return steps;
+}
+
+} // namespace app
