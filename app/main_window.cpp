@@ -142,8 +142,9 @@ void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
 }
 
 FamilyWorkspace* MainWindow::workspace(drive_core::DriveFamily family) const {
-    for (FamilyWorkspace* w : m_workspaces)
-        if (w->family() == family) return w;
+    // The last one added for a family wins (a test or a plug-in may stand in for the built-in one).
+    for (auto it = m_workspaces.crbegin(); it != m_workspaces.crend(); ++it)
+        if ((*it)->family() == family) return *it;
     return nullptr;
 }
 
@@ -151,7 +152,7 @@ void MainWindow::showFamily(drive_core::DriveFamily family) {
     const bool bds5 = family == drive_core::DriveFamily::Bds5;
     for (QAction* action : m_bds5Only) action->setVisible(bds5);
     for (FamilyWorkspace* w : m_workspaces) {
-        const bool active = w->family() == family;
+        const bool active = w == workspace(family);
         for (QMenu* menu : w->menus()) menu->menuAction()->setVisible(active);
         for (QDockWidget* dock : w->docks()) {
             dock->toggleViewAction()->setVisible(active);

@@ -88,7 +88,7 @@ private slots:
     void aFamilyGetsItsWorkspaceAndTheBds5ComesBack() {
         app::MainWindow window;
         auto* probe = new ProbeWorkspace(&window);
-        window.addWorkspace(probe);
+        window.addWorkspace(probe); // stands in for the built-in PMC-960 workspace
         window.connectDrive(ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(bds5Ready(window), kTimeoutMs);
@@ -113,14 +113,6 @@ private slots:
         QCOMPARE(menuVisible(window, QStringLiteral("&Program")), true);
         QCOMPARE(menuVisible(window, QStringLiteral("&Probe")), false);
         QTRY_VERIFY_WITH_TIMEOUT(bds5Ready(window), kTimeoutMs);
-    }
-
-    void aFamilyWithoutAWorkspaceIsRefusedClearly() {
-        app::MainWindow window;
-        window.connectDrive(ConnectionChoice::simulator(DriveFamily::Sc750));
-        if (window.workspace(DriveFamily::Sc750)) QSKIP("this build has an SC750 workspace");
-        QCOMPARE(window.activeFamily(), DriveFamily::Bds5);
-        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("SC750")));
     }
 
     void theFamilyIsRememberedAndChosenInTheDialog() {
