@@ -25,6 +25,11 @@ bool SeriesStore::append(std::size_t channel, Sample sample) {
     return true;
 }
 
+void SeriesStore::dropBefore(double time_s) {
+    for (Channel& c : m_channels)
+        while (!c.samples.empty() && c.samples.front().time_s < time_s) c.samples.pop_front();
+}
+
 void SeriesStore::clear() {
     for (Channel& c : m_channels) c.samples.clear();
 }

@@ -36,6 +36,8 @@ public:
 
     // Appends in time order; a sample older than the channel's last one is refused (returns false).
     bool append(std::size_t channel, Sample sample);
+    // A rolling window: drops every channel's samples older than time_s.
+    void dropBefore(double time_s);
     void clear();
 
     std::size_t channelCount() const { return m_channels.size(); }

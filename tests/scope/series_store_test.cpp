@@ -42,3 +42,12 @@ TEST(SeriesStore, ValueRangeOfAWindow) {
     EXPECT_EQ(r->maximum, 100);
     EXPECT_FALSE(store.valueRange(c, 10, 20));
 }
+
+TEST(SeriesStore, DropBeforeKeepsTheRollingWindow) {
+    scope::SeriesStore store;
+    const std::size_t pfb = store.addChannel("PFB", "POS");
+    for (int i = 0; i < 10; ++i) store.append(pfb, {double(i), double(10 * i)});
+    store.dropBefore(6.5);
+    ASSERT_EQ(store.channel(pfb).samples.size(), 3u);
+    EXPECT_EQ(store.channel(pfb).samples.front().value, 70);
+}
