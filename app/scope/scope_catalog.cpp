@@ -38,6 +38,15 @@ QStringList recordableVariables() {
     return ordered;
 }
 
+QStringList pollableVariables() {
+    QStringList names = recordableVariables();
+    for (const cat::VariableInfo& v : cat::variables()) {
+        const QString name = QString::fromLatin1(v.name.data(), qsizetype(v.name.size()));
+        if (v.firstIndex == 0 && !names.contains(name)) names << name;
+    }
+    return names;
+}
+
 std::string unitOf(const std::string& variable) {
     const auto ref = cat::findVariable(variable);
     if (!ref) return {};

@@ -21,6 +21,8 @@ struct GainInfo {
 
 // Every plain variable the drive can RECORD, in catalog order (VFB, VCMD, ICMD, PFB, ...).
 QStringList recordableVariables();
+// Every plain variable and switch P can print (for the polled chart), the recordable tuning signals first.
+QStringList pollableVariables();
 // The manual's unit name of a variable ("VEL", "POS", "I", "Hz"), "" when it has none or is unknown.
 std::string unitOf(const std::string& variable);
 // The tuning panel's gains (KP, KF, KV, KVI, KPROP, LPFHZ, ILIM) and switches (LPF, PL, PROP, PLIM).

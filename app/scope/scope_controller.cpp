@@ -1,6 +1,7 @@
 // ScopeController: the Scope menu's actions.
 #include "scope_controller.h"
 
+#include "bode_view.h"
 #include "capture_table_model.h"
 #include "drive_connection.h"
 #include "main_window.h"
@@ -11,6 +12,7 @@
 #include "transfer_dialog.h"
 #include "transfer_reporter.h"
 #include "tuning_panel.h"
+#include "watch_view.h"
 
 #include "scope/capture_csv.h"
 #include "scope/play_parser.h"
@@ -66,10 +68,41 @@ ScopeController::ScopeController(MainWindow& window)
     m_menu->addAction(tr("&Print Plot..."), this, &ScopeController::printPlot);
     m_menu->addAction(tr("&Export Plot (PDF, PNG, SVG)..."), this, &ScopeController::exportPlot);
     m_menu->addSeparator();
+    m_menu->addAction(tr("&Frequency Response..."), this, &ScopeController::frequencyResponse);
+    m_menu->addAction(tr("&Watch Variables..."), this, &ScopeController::watchVariables);
+    m_menu->addSeparator();
     m_menu->addAction(m_scopeDock->toggleViewAction());
     QAction* tuning = m_tuningDock->toggleViewAction();
     tuning->setText(tr("&Tuning Panel"));
     m_menu->addAction(tuning);
+    connect(this, &ScopeController::captureShown, this, &ScopeController::keepForBode);
+    connect(&m_tuning->runner(), &TuningRunner::runFinished, this,
+            [this](const TuningRun& run) { keepForBode(run.capture); });
+}
+
+void ScopeController::keepForBode(const scope::Capture& capture) {
+    if (!capture.find("VCMD") || !capture.find("VFB")) return;
+    m_lastVelocity = capture;
+    if (m_bode && m_bode->isVisible()) m_bode->showCapture(capture);
+}
+
+BodeView* ScopeController::frequencyResponse() {
+    if (!m_bode) m_bode = new BodeView(&m_window);
+    if (m_lastVelocity)
+        m_bode->showCapture(*m_lastVelocity);
+    else
+        m_bode->showNothing(tr("Nothing recorded with VCMD and VFB yet: in the tuning panel choose the preset "
+                               "\"Step for frequency response\" and Run Once (or record them with From Drive)."));
+    m_bode->show();
+    m_bode->raise();
+    return m_bode;
+}
+
+WatchView* ScopeController::watchVariables() {
+    if (!m_watch) m_watch = new WatchView(m_window.connection(), &m_window);
+    m_watch->show();
+    m_watch->raise();
+    return m_watch;
 }
 
 void ScopeController::status(const QString& message) {

@@ -1,6 +1,6 @@
 // ScopeController: Motion Link's SCOPE menu and the Scope dock — From Drive (RECORD set-up, trigger, PLAY
 // with progress and cancel), View Again, From Disk / Save (.CSV), View Data (table), Print Plot, PDF, PNG
-// and SVG export — and the Tuning panel dock. MainWindow constructs it and adds menu() and the docks.
+// and SVG export, Frequency Response (Bode), Watch Variables (polled chart) — and the Tuning panel dock. MainWindow constructs it and adds menu() and the docks.
 // GUI thread only.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include "serialport/bds5_record_play.h"
 
 #include <QObject>
+#include <QPointer>
 
 #include <optional>
 
@@ -17,8 +18,10 @@ class QMenu;
 
 namespace app {
 
+class BodeView;
 class MainWindow;
 class ScopeView;
+class WatchView;
 class TuningPanel;
 
 class ScopeController final : public QObject {
@@ -44,6 +47,10 @@ public:
     void printPlot();
     void exportPlot(); // PDF, PNG or SVG by the chosen file's suffix
     bool exportTo(const QString& path);
+    // Bode view of the last capture (recorded, opened or a tuning run) that holds VCMD and VFB; it follows
+    // each new one while open.
+    BodeView* frequencyResponse();
+    WatchView* watchVariables(); // the polled rolling chart (one window, reused)
 
 signals:
     void captureShown(const scope::Capture& capture);
@@ -51,6 +58,7 @@ signals:
 
 private:
     void show(const scope::Capture& capture);
+    void keepForBode(const scope::Capture& capture);
     void raiseScopeDock();
     void status(const QString& message);
 
@@ -61,6 +69,9 @@ private:
     ScopeView* m_view;
     TuningPanel* m_tuning;
     std::optional<scope::Capture> m_last;
+    std::optional<scope::Capture> m_lastVelocity; // the last with VCMD and VFB, for the Bode view
+    QPointer<BodeView> m_bode;
+    QPointer<WatchView> m_watch;
 };
 
 } // namespace app

@@ -4,6 +4,7 @@
 #include "drive_connection.h"
 #include "gain_editor.h"
 #include "main_window.h"
+#include "scope_controller.h"
 #include "scope_view.h"
 
 #include <QComboBox>
@@ -64,6 +65,7 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
     m_runsTable->setSelectionMode(QAbstractItemView::SingleSelection);
     m_undo = new QPushButton(tr("Undo to Selected Run's Gains"), this);
     auto* save = new QPushButton(tr("Save Gains .VAR..."), this);
+    auto* bode = new QPushButton(tr("Frequency Response..."), this);
     auto* runsBox = new QWidget(this);
     auto* runsLayout = new QVBoxLayout(runsBox);
     runsLayout->setContentsMargins(0, 0, 0, 0);
@@ -71,6 +73,7 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
     auto* runsButtons = new QHBoxLayout;
     runsButtons->addWidget(m_undo);
     runsButtons->addWidget(save);
+    runsButtons->addWidget(bode);
     runsButtons->addStretch(1);
     runsLayout->addLayout(runsButtons);
 
@@ -89,6 +92,7 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
         if (row >= 0) m_runner->undoTo(m_runsTable->item(row, 0)->text().toInt());
     });
     connect(save, &QPushButton::clicked, this, &TuningPanel::saveGainsAs);
+    connect(bode, &QPushButton::clicked, this, [this] { m_window.scopeController().frequencyResponse(); });
     connect(m_runner, &TuningRunner::gainConfirmed, this, [this](const QString& name, int value) {
         if (GainEditor* e = m_editors.value(name)) {
             e->setValue(value); // also when the change came from elsewhere (undo, a preset)
@@ -143,7 +147,8 @@ QWidget* TuningPanel::buildTestMove() {
     auto* box = new QGroupBox(tr("Test move"), this);
     auto* form = new QFormLayout(box);
     m_moveKind = new QComboBox(box);
-    for (const auto kind : {TestMove::Kind::VelocityStep, TestMove::Kind::PositionStep, TestMove::Kind::BackAndForth})
+    for (const auto kind : {TestMove::Kind::VelocityStep, TestMove::Kind::PositionStep, TestMove::Kind::BackAndForth,
+                            TestMove::Kind::FrequencyStep})
         m_moveKind->addItem(TestMove::kindName(kind), int(kind));
     m_amplitude = new QSpinBox(box);
     m_amplitude->setRange(1, 1'000'000);

@@ -3,6 +3,7 @@
 
 #include "drive_connection.h"
 #include "main_window.h"
+#include "scope/bode_view.h"
 #include "scope/gain_editor.h"
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
@@ -103,6 +104,32 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
         window.connection().sendCommand(QStringLiteral("DIS"));
     };
     steps.push_back(third);
+    // The Bode view of a run with the frequency-response preset (a held velocity step of VCMD and VFB).
+    auto bode = std::make_shared<QPointer<BodeView>>();
+    ScreenshotTour::Step response = tuningRun(window, QStringLiteral("scope-bode"), 4, 0);
+    const auto runFourth = response.act;
+    response.act = [&window, panel, runFourth] {
+        window.connection().sendCommand(QStringLiteral("EN"));
+        TestMove move;
+        move.kind = TestMove::Kind::FrequencyStep;
+        move.amplitude = 500;
+        move.durationMs = 400;
+        panel->setTestMove(move);
+        runFourth();
+    };
+    const auto fourthDone = response.ready;
+    response.ready = [&scope, bode, fourthDone] {
+        if (!fourthDone()) return false;
+        if (!*bode) *bode = scope.frequencyResponse();
+        return (*bode)->isVisible();
+    };
+    response.grab = [bode] { return (*bode)->grab(); };
+    response.text = [bode] { return (*bode)->summary(); };
+    response.cleanUp = [&window, bode] {
+        if (*bode) (*bode)->close();
+        window.connection().sendCommand(QStringLiteral("DIS"));
+    };
+    steps.push_back(response);
     return steps;
 }
 

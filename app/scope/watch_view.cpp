@@ -1,0 +1,130 @@
+// WatchView: chooser, buttons and the incremental rolling chart.
+#include "watch_view.h"
+
+#include "scope_catalog.h"
+#include "variable_watcher.h"
+
+#include <qcustomplot.h>
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace app {
+
+namespace {
+constexpr int kMaxVariables = 4;
+const QColor kColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c),
+                           QColor(0x94, 0x67, 0xbd)};
+} // namespace
+
+WatchView::WatchView(DriveConnection& connection, QWidget* parent)
+    : QDialog(parent), m_watcher(new VariableWatcher(connection, this)), m_chooser(new QListWidget(this)),
+      m_start(new QPushButton(tr("&Start"), this)), m_stop(new QPushButton(tr("S&top"), this)),
+      m_rate(new QLabel(this)), m_plot(new QCustomPlot(this)) {
+    setObjectName(QStringLiteral("watchView"));
+    setWindowTitle(tr("Watch Variables"));
+    for (const QString& name : pollableVariables()) {
+        auto* item = new QListWidgetItem(name, m_chooser);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(Qt::Unchecked);
+    }
+    m_chooser->setMaximumWidth(140);
+    m_chooser->setToolTip(tr("Tick up to %1 variables; P polls them as fast as the link answers.").arg(kMaxVariables));
+    m_plot->setMinimumSize(480, 300);
+    m_plot->xAxis->setLabel(tr("time [s]"));
+    m_plot->axisRect()->setupFullAxesBox(false);
+    m_plot->legend->setVisible(true);
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_start);
+    buttons->addWidget(m_stop);
+    buttons->addWidget(m_rate, 1);
+    auto* right = new QVBoxLayout;
+    right->addWidget(m_plot, 1);
+    right->addLayout(buttons);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(m_chooser);
+    layout->addLayout(right, 1);
+    resize(820, 420);
+
+    connect(m_start, &QPushButton::clicked, this, &WatchView::start);
+    connect(m_stop, &QPushButton::clicked, this, &WatchView::stop);
+    connect(m_watcher, &VariableWatcher::sampled, this, &WatchView::onSampled);
+    connect(m_watcher, &VariableWatcher::stateChanged, this, &WatchView::updateState);
+    connect(m_watcher, &VariableWatcher::message, m_rate, &QLabel::setText);
+    connect(this, &QDialog::finished, this, &WatchView::stop); // closing the window stops the polls
+    updateState();
+}
+
+QString WatchView::rateLabel() const {
+    return m_rate->text();
+}
+
+void WatchView::watch(const QStringList& names) {
+    for (int i = 0; i < m_chooser->count(); ++i) {
+        QListWidgetItem* item = m_chooser->item(i);
+        item->setCheckState(names.contains(item->text(), Qt::CaseInsensitive) ? Qt::Checked : Qt::Unchecked);
+    }
+    start();
+}
+
+void WatchView::start() {
+    QStringList names;
+    for (int i = 0; i < m_chooser->count(); ++i)
+        if (m_chooser->item(i)->checkState() == Qt::Checked) names << m_chooser->item(i)->text();
+    if (names.size() > kMaxVariables) {
+        m_rate->setText(tr("At most %1 variables: the more P asks for, the slower each sample.").arg(kMaxVariables));
+        return;
+    }
+    m_watcher->setVariables(names);
+    m_plot->clearGraphs();
+    m_plottedUntil_s = -1;
+    for (int i = 0; i < names.size(); ++i) {
+        // The first variable on the left axis, the second on the right, the others share the left one.
+        QCPAxis* y = i == 1 ? m_plot->yAxis2 : m_plot->yAxis;
+        QCPGraph* graph = m_plot->addGraph(m_plot->xAxis, y);
+        const std::string unit = unitOf(names[i].toUpper().toStdString());
+        graph->setName(unit.empty() ? names[i] : QStringLiteral("%1 [%2]").arg(names[i], QString::fromStdString(unit)));
+        graph->setPen(QPen(kColours[i % kMaxVariables], 1.6));
+        graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 4));
+        y->setLabel(graph->name());
+    }
+    m_plot->yAxis2->setTickLabels(names.size() > 1);
+    m_watcher->start();
+}
+
+void WatchView::stop() {
+    m_watcher->stop();
+}
+
+// Appends only the new samples and drops what left the window: the graphs are never rebuilt.
+void WatchView::onSampled(double time_s) {
+    const scope::SeriesStore& store = m_watcher->store();
+    for (int g = 0; g < m_plot->graphCount() && std::size_t(g) < store.channelCount(); ++g) {
+        const auto& s = store.channel(std::size_t(g)).samples;
+        for (auto it = s.rbegin(); it != s.rend() && it->time_s > m_plottedUntil_s; ++it)
+            m_plot->graph(g)->addData(it->time_s, it->value); // addData keeps the graph sorted by key
+        m_plot->graph(g)->data()->removeBefore(time_s - VariableWatcher::kWindow_s);
+        m_plot->graph(g)->rescaleValueAxis(false, true);
+    }
+    m_plottedUntil_s = time_s;
+    m_plot->xAxis->setRange(std::max(0.0, time_s - VariableWatcher::kWindow_s), std::max(time_s, 1.0));
+    for (QCPAxis* y : {m_plot->yAxis, m_plot->yAxis2})
+        if (y->range().size() == 0) y->setRange(y->range().lower - 1, y->range().upper + 1);
+    m_rate->setText(m_watcher->rateText());
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void WatchView::updateState() {
+    const bool running = m_watcher->isRunning();
+    m_start->setEnabled(!running);
+    m_stop->setEnabled(running);
+    m_chooser->setEnabled(!running);
+    if (m_watcher->isPaused() || !running) m_rate->setText(running ? m_watcher->rateText() : tr("stopped"));
+}
+
+} // namespace app

@@ -1,0 +1,124 @@
+// Frequency response and polled chart against the simulated BDS5, asserting what a user sees: after TUNE 30 2
+// the Bode view of a velocity step reads a -3 dB bandwidth near 30 Hz on a plot that is not blank; Watch
+// Variables polls PFB while J 100 runs, the chart's values rise, the label shows a positive rate, and Stop
+// puts no more P on the wire.
+#include "app/drive/drive_connection.h"
+#include "app/main_window.h"
+#include "app/scope/bode_view.h"
+#include "app/scope/scope_controller.h"
+#include "app/scope/tuning_panel.h"
+#include "app/scope/variable_watcher.h"
+#include "app/scope/watch_view.h"
+
+#include <qcustomplot.h>
+
+#include <QSet>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+
+using app::MainWindow;
+
+namespace {
+constexpr int kDriveTimeoutMs = 30000;
+
+bool driveReady(const MainWindow& window) {
+    const auto* session = window.connection().session();
+    return session && session->state() == serialport::Bds5Session::State::Ready &&
+           session->mode() == serialport::Bds5Mode::Interactive;
+}
+
+int distinctColours(const QImage& image) {
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2) colours.insert(image.pixel(x, y));
+    return int(colours.size());
+}
+
+struct Window {
+    MainWindow window;
+    Window() {
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+    }
+    bool enabled() {
+        if (!QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs)) return false;
+        window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0); // PMAX/PMIN off
+        window.connection().sendCommand(QStringLiteral("EN"));
+        return QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs);
+    }
+};
+} // namespace
+
+class BodeTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskBodeTest"));
+    }
+
+    void tune30Hz2GivesABodeBandwidthNear30Hz() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::ScopeController& scope = w.window.scopeController();
+        app::TuningRunner& runner = scope.tuningPanel()->runner();
+        // The velocity loop alone (PL OFF) and a command that steps within a millisecond, as for the step test.
+        runner.setGain(QStringLiteral("PL"), 0);
+        w.window.connection().sendCommand(QStringLiteral("ACC=1000000"));
+        app::TestMove move;
+        move.kind = app::TestMove::Kind::FrequencyStep;
+        move.amplitude = 100;
+        move.durationMs = 400;
+        scope.tuningPanel()->setTestMove(move);
+        QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
+        runner.tune(30, 2);
+        QVERIFY(runs.wait(2 * kDriveTimeoutMs));
+
+        app::BodeView* bode = scope.frequencyResponse();
+        QVERIFY(bode && bode->isVisible());
+        const scope::FrequencyResponse& r = bode->response();
+        QCOMPARE(r.status, scope::FrequencyResponse::Status::Ok);
+        QVERIFY2(r.bandwidth_hz, qPrintable(bode->summary()));
+        qInfo("TUNE 30 2: Bode -3 dB bandwidth %.1f Hz; %s", *r.bandwidth_hz, qPrintable(bode->summary()));
+        QVERIFY2(*r.bandwidth_hz > 15 && *r.bandwidth_hz < 60, qPrintable(QString::number(*r.bandwidth_hz)));
+        QVERIFY(bode->summary().contains(QStringLiteral("Hz")));
+        QCOMPARE(bode->plot()->graphCount(), 2);
+        QVERIFY(bode->plot()->graph(0)->dataCount() >= 5);
+        QVERIFY(QTest::qWaitForWindowExposed(bode));
+        bode->plot()->replot(QCustomPlot::rpImmediateRefresh);
+        QVERIFY2(distinctColours(bode->plot()->grab().toImage()) > 20, "the Bode plot is blank");
+    }
+
+    void watchingPfbWhileJoggingShowsItRiseAndStopEndsThePolls() {
+        Window w;
+        QVERIFY(w.enabled());
+        w.window.connection().sendCommand(QStringLiteral("J 100"));
+        app::WatchView* watch = w.window.scopeController().watchVariables();
+        watch->watch({QStringLiteral("PFB")});
+        const app::VariableWatcher& watcher = watch->watcher();
+        QTRY_VERIFY_WITH_TIMEOUT(watcher.store().channel(0).samples.size() >= 6, kDriveTimeoutMs);
+        const auto& samples = watcher.store().channel(0).samples;
+        QVERIFY2(samples.back().value > samples.front().value,
+                 qPrintable(QStringLiteral("%1 -> %2").arg(samples.front().value).arg(samples.back().value)));
+        QVERIFY(watcher.rate_hz() > 0);
+        QVERIFY2(watch->rateLabel().startsWith(QStringLiteral("polled, ")) &&
+                     watch->rateLabel().endsWith(QStringLiteral("samples/s")),
+                 qPrintable(watch->rateLabel()));
+        qInfo("%s", qPrintable(watch->rateLabel()));
+        QVERIFY(watch->plot()->graph(0)->dataCount() >= 6);
+
+        watch->stop();
+        QTest::qWait(300); // a poll already on the wire is answered
+        QSignalSpy sent(w.window.connection().session(), &serialport::Bds5Session::rawSent);
+        QTest::qWait(1500);
+        for (const QList<QVariant>& s : sent)
+            QVERIFY2(!s.at(0).toByteArray().startsWith("P PFB"), "a poll went out after Stop");
+        QVERIFY(!watcher.isRunning());
+        w.window.connection().sendCommand(QStringLiteral("J 0"));
+    }
+};
+
+QTEST_MAIN(BodeTest)
+#include "bode_test.moc"
