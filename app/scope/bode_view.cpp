@@ -88,7 +88,11 @@ void BodeView::plotResponse(const QString& title) {
     m_plot->clearGraphs();
     m_plot->clearItems();
     QVector<double> f, mag, phase;
+    // Plotted down to 40 dB below the lowest frequency's gain: further down, a recording in whole counts
+    // holds only quantisation noise, whose ratios would scatter over the plot and unwrap the phase wildly.
+    const double floor_db = m_response.points.empty() ? 0.0 : m_response.points.front().magnitude_db - 40.0;
     for (const scope::FrequencyPoint& p : m_response.points) {
+        if (p.magnitude_db < floor_db) break;
         f << p.frequency_hz;
         mag << p.magnitude_db;
         phase << p.phase_deg;

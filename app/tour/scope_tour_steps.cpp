@@ -109,6 +109,10 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
     ScreenshotTour::Step response = tuningRun(window, QStringLiteral("scope-bode"), 4, 0);
     const auto runFourth = response.act;
     response.act = [&window, panel, runFourth] {
+        // The velocity loop alone at the power-up KV, driven by a true step: the loop's own response.
+        panel->runner().setGain(QStringLiteral("KV"), 2000);
+        panel->runner().setGain(QStringLiteral("PL"), 0);
+        window.connection().sendCommand(QStringLiteral("ACC=1000000"));
         window.connection().sendCommand(QStringLiteral("EN"));
         TestMove move;
         move.kind = TestMove::Kind::FrequencyStep;
