@@ -360,8 +360,11 @@ void Pmc960Drive::stream(std::string command, int period_ms) {
     m_mode = Mode::Stream;
     m_streamCommand = std::move(command);
     m_streamPeriod_us = std::int64_t(period_ms) * 1000;
-    m_nextStream_us = m_time.count(); // the first value at once
-    tick(0);
+    // The first value at once, sent here rather than by a tick: a program that streams runs inside a
+    // tick, and a tick from here would run it again, streaming again, until the stack ran out (found by
+    // pmc960_drive_fuzz; reproducer in tests/drive_core/pmc960/fuzz_corpus).
+    send("\r\n" + m_interpreter.display(m_streamCommand, '!'));
+    m_nextStream_us = m_time.count() + m_streamPeriod_us;
 }
 
 void Pmc960Drive::softwareReset() {
