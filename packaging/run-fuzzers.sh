@@ -7,6 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 seconds=${1:-${SERVODESK_FUZZ_SECONDS:-30}}
+# A fixed seed keeps CI's runs repeatable (a finding there is found again by the same command); give
+# another seed (SERVODESK_FUZZ_SEED=0 lets libFuzzer choose) for longer runs that look elsewhere.
+seed=${SERVODESK_FUZZ_SEED:-1}
 build=${SERVODESK_FUZZ_BUILD:-$root/build-fuzz}
 export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 launcher=()
@@ -33,7 +36,7 @@ for t in "${targets[@]}"; do
     mkdir -p "$work" "$artifacts"
     log=$build/$name.log
     # shellcheck disable=SC2086
-    if "$build/$dir/$name" "$work" "$root/$corpus" $flags -timeout=10 \
+    if "$build/$dir/$name" "$work" "$root/$corpus" $flags -seed="$seed" -timeout=10 \
         -rss_limit_mb=2048 -max_total_time="$seconds" -artifact_prefix="$artifacts" -print_final_stats=1 \
         >"$log" 2>&1; then
         runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
