@@ -9,6 +9,9 @@ constexpr int kNothingRecorded = 65; // ERR 65 RECORD NOT READY
 constexpr int kNotRecordable = 89;   // ERR 89 NOT FOR ALARM/HOLD/RECORD
 constexpr int kTooManyPoints = 90;   // ERR 90 TOO MANY POINTS
 constexpr int kRecordPoints = 1000;  // n x variables (L7425)
+// PLAY readings before giving up. A clean wire needs two; at 1 % dropped + 1 % corrupted bytes most
+// recordings come together within ten (tests/serialport/play_campaign_test.cpp).
+constexpr int kMaxPlays = 16;
 } // namespace
 
 QString Bds5RecordPlan::recordLine() const {
@@ -39,6 +42,8 @@ void Bds5RecordPlay::begin() {
     m_nextCommand = 0;
     m_commandInFlight = false;
     m_result = {};
+    m_listing.reset();
+    m_plays = 0;
     if (!sessionAtInteractivePrompt()) {
         m_result.status = Bds5TransferResult::Status::Refused;
         m_result.summary = tr("The drive is not at its --> prompt (mode: %1): nothing was recorded. RECORD and "
@@ -92,26 +97,44 @@ void Bds5RecordPlay::answered(const Bds5Response& response) {
                                   "to read it).");
             return finish(m_result);
         }
-        if (!response.errors.isEmpty()) {
+        if (!response.errors.isEmpty() && response.errors.first().code == kNothingRecorded && !response.garbled) {
             const Bds5ErrorLine& e = response.errors.first();
             m_result.errors.append({0, 0, QStringLiteral("PLAY"), e});
             m_result.status = Bds5TransferResult::Status::Failed;
-            m_result.summary = e.code == kNothingRecorded
-                                   ? tr("%1 — the drive holds no recording.").arg(describeError(e))
-                                   : tr("The drive answered PLAY with %1.").arg(describeError(e));
+            m_result.summary = tr("%1 — the drive holds no recording.").arg(describeError(e));
             return finish(m_result);
         }
-        m_stage = Stage::Done;
-        m_result.lines = response.lines;
-        m_result.linesDone = int(response.lines.size());
-        m_result.summary =
-            tr("Recorded %1 every %2 ms: %n sample(s).", nullptr, std::max(0, int(response.lines.size()) - 1))
-                .arg(variablesText())
-                .arg(m_plan.intervalMs);
-        if (!m_result.errors.isEmpty())
-            m_result.summary += tr(" The drive refused \"%1\": %2.")
-                                    .arg(m_result.errors.first().sent, describeError(m_result.errors.first().error));
-        return finish(m_result);
+        // Any other error line means PLAY or its answer was damaged on the wire: the copy counts as damaged.
+        m_listing->addCopy(response.text, response.garbled);
+        if (m_listing->complete()) {
+            m_stage = Stage::Done;
+            m_result.lines = m_listing->lines();
+            m_result.linesDone = int(m_result.lines.size());
+            m_result.summary = tr("Recorded %1 every %2 ms: %n sample(s).", nullptr, m_plan.samples)
+                                   .arg(variablesText())
+                                   .arg(m_plan.intervalMs);
+            const int troubled = m_listing->damagedCopies() + m_listing->lostCopies();
+            if (troubled > 0)
+                m_result.summary += tr(" PLAY was read %1 times: the link damaged %2 of them, and the samples "
+                                       "shown are the ones the readings agree on.")
+                                        .arg(m_plays)
+                                        .arg(troubled);
+            if (!m_result.errors.isEmpty())
+                m_result.summary +=
+                    tr(" The drive refused \"%1\": %2.")
+                        .arg(m_result.errors.first().sent, describeError(m_result.errors.first().error));
+            return finish(m_result);
+        }
+        if (const auto other = m_listing->otherHeader()) {
+            m_result.status = Bds5TransferResult::Status::Failed;
+            m_result.summary = tr("The drive recorded \"%1\", not \"%2\": the RECORD command was damaged on "
+                                  "its way. Nothing was shown; record again.")
+                                   .arg(*other, m_plan.recordLine());
+            return finish(m_result);
+        }
+        return playAgainOrFail(response.errors.isEmpty()
+                                   ? tr("the listing was damaged")
+                                   : tr("the drive answered %1").arg(describeError(response.errors.first())));
     }
     case Stage::Done: break;
     }
@@ -136,9 +159,31 @@ void Bds5RecordPlay::tick() {
 void Bds5RecordPlay::sendPlay() {
     m_tick.stop();
     m_stage = Stage::Play;
-    emit stageChanged(tr("Reading %n sample(s) (PLAY)", nullptr, m_plan.samples));
+    if (!m_listing) m_listing.emplace(m_plan.recordLine().toUpper(), m_plan.samples, int(m_plan.variables.size()));
+    ++m_plays;
+    emit stageChanged(
+        m_plays == 1 ? tr("Reading %n sample(s) (PLAY)", nullptr, m_plan.samples)
+                     : tr("Reading %n sample(s) again to check them (PLAY %1)", nullptr, m_plan.samples).arg(m_plays));
     send(QStringLiteral("PLAY"));
     countLinesInto(0, m_plan.samples + 1);
+}
+
+// After a reading that left samples unsettled: PLAY once more, or give up saying how far it got.
+void Bds5RecordPlay::playAgainOrFail(const QString& lastTrouble) {
+    const bool connected = session() && session()->state() != Bds5Session::State::Closed;
+    if (connected && m_plays < kMaxPlays) return sendPlay();
+    m_result.status = Bds5TransferResult::Status::Failed;
+    m_result.summary = tr("PLAY was read %1 times and %2 of %3 samples never came through alike often enough to "
+                          "be trusted (%4 readings damaged, %5 lost; last: %6). Nothing was shown; the recording "
+                          "stays on the drive — check the cable and read it again.")
+                           .arg(m_plays)
+                           .arg(m_listing->samples() - m_listing->samplesAgreed())
+                           .arg(m_listing->samples())
+                           .arg(m_listing->damagedCopies())
+                           .arg(m_listing->lostCopies())
+                           .arg(lastTrouble);
+    if (!connected) m_result.summary = tr("The recording could not be read: %1.").arg(lastTrouble);
+    finish(m_result);
 }
 
 void Bds5RecordPlay::finishCancelled() {
@@ -155,6 +200,10 @@ void Bds5RecordPlay::finishCancelled() {
 
 void Bds5RecordPlay::lost(const QString& reason) {
     m_tick.stop();
+    if (m_stage == Stage::Play && m_listing && !isCancelling()) {
+        m_listing->addLostCopy(); // the session asks for a prompt again; the next PLAY waits for it
+        return playAgainOrFail(reason);
+    }
     m_result.status = Bds5TransferResult::Status::Failed;
     m_result.summary = tr("The recording failed: %1.").arg(reason);
     finish(m_result);

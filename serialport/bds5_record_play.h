@@ -3,13 +3,18 @@
 // rest of a test move, e.g. J 0 200 ms later), waits until n x t ms have passed, and retrieves the samples
 // with PLAY. result.lines holds PLAY's listing (scope::parsePlay reads it). The drive's refusals are
 // surfaced: ERR 89 (not recordable), 90 (too many points), 83 (bad interval), 65 (nothing recorded).
+// PLAY is read at least twice and the copies compared (Bds5PlayListing): a wire that drops or corrupts
+// bytes gives the exact samples after a few more readings, or a failure that says so; never shifted data.
 // GUI thread; never blocks: the wait runs on a timer.
 #pragma once
 
+#include "bds5_play_listing.h"
 #include "bds5_transfer.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
+
+#include <optional>
 
 namespace serialport {
 
@@ -46,6 +51,7 @@ private:
     enum class Stage { Record, Commands, Play, Done };
     void tick();
     void sendPlay();
+    void playAgainOrFail(const QString& lastTrouble);
     void finishCancelled();
     QString variablesText() const;
 
@@ -55,7 +61,9 @@ private:
     bool m_commandInFlight = false;
     QElapsedTimer m_since; // since the drive accepted RECORD
     QTimer m_tick;
-    Bds5TransferResult m_result; // errors of the plan's commands gather here
+    Bds5TransferResult m_result;              // errors of the plan's commands gather here
+    std::optional<Bds5PlayListing> m_listing; // the PLAY copies read so far
+    int m_plays = 0;
 };
 
 } // namespace serialport
