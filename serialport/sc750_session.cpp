@@ -20,10 +20,10 @@ Sc750Session::Sc750Session(Link& link, QObject* parent) : QObject(parent), m_lin
     connect(&m_link, &Link::opened, this, &Sc750Session::pump);
 }
 
-quint64 Sc750Session::send(char letter, const QString& payload) {
+quint64 Sc750Session::send(char letter, const QString& payload, bool repeatable) {
     const quint64 id = m_nextId++;
     const std::string frame = sc::encodeFrame(letter, payload.toStdString());
-    m_queue.push_back(Pending{id, letter, QByteArray::fromStdString(frame)});
+    m_queue.push_back(Pending{id, letter, QByteArray::fromStdString(frame), 1, repeatable});
     pump();
     return id;
 }
@@ -90,7 +90,21 @@ void Sc750Session::onBytes(const QByteArray& bytes) {
 
 void Sc750Session::onFrame(const QByteArray& body) {
     const auto frame = sc::decodeFrame(body.toStdString());
-    if (!frame) return; // damaged: the time-out retries the command
+    if (!frame) { // damaged: the time-out retries the command, or a repeatable one goes again now
+        if (m_current && m_current->repeatable) {
+            if (m_current->retries-- > 0) {
+                m_timeout.start(timeoutMs(m_current->frame));
+                write(m_current->frame);
+                return;
+            }
+            m_timeout.stop();
+            const Pending lost = *m_current;
+            m_current.reset();
+            emit failed(lost.id, QStringLiteral("no answer from the SC750 (its answer was damaged)"));
+            pump();
+        }
+        return;
+    }
     const QString payload = QString::fromStdString(frame->payload);
     switch (frame->letter) {
     case 'b': emit breakpointHit(payload.toInt()); return;
@@ -106,6 +120,13 @@ void Sc750Session::onFrame(const QByteArray& body) {
     const char expected = m_current && m_current->letter == '?' ? 'S' : m_current ? m_current->letter : 0;
     if (!m_current || (frame->letter != expected && frame->letter != '!')) {
         if (frame->letter == 'H') emit programStopped(payload.toInt()); // the answer to Ctrl C
+        return;
+    }
+    // The drive saw our frame damaged ("!01 BAD FRAME", "!01 FRAME TOO LONG" when its CR was lost): it did
+    // nothing, so the command goes again at once, as after a time-out.
+    if (frame->letter == '!' && payload.startsWith(QLatin1String("01 ")) && m_current->retries-- > 0) {
+        m_timeout.start(timeoutMs(m_current->frame));
+        write(m_current->frame);
         return;
     }
     m_timeout.stop();

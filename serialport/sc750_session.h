@@ -1,6 +1,7 @@
 // Sc750Session: talks to one SC750 over any Link with the Motion Dialogue protocol (drive_core/sc750/
 // PROTOCOL.md). One command frame in flight at a time (stop and wait), each with a time-out derived from
-// the baud rate and one automatic retry; the program's own output and the drive's events (breakpoint
+// the baud rate and one automatic retry (after a time-out, or at once when the drive answers "!01 BAD FRAME":
+// it saw the frame damaged and did nothing); the program's own output and the drive's events (breakpoint
 // hit, program end, run-time error) are signalled separately. GUI thread; never blocks and never spins a
 // nested event loop. The session keeps a reference to its link: whoever owns both destroys it first.
 #pragma once
@@ -29,7 +30,10 @@ public:
 
     // Queues one command frame (letter and payload as PROTOCOL.md gives them). Returns an id that
     // finished() or failed() carries; a drive error reply ("!nn TEXT") arrives through failed().
-    quint64 send(char letter, const QString& payload = {});
+    // repeatable: the command may safely reach the drive twice (V, ?, the download's D, W and Z): a damaged
+    // answer frame sends it again at once instead of after the time-out, or fails it when the retry is
+    // spent. Not for others: a damaged frame might be an event's, and the real answer still on its way.
+    quint64 send(char letter, const QString& payload = {}, bool repeatable = false);
     // Ctrl C, written at once ahead of the queue: stops the program and motion; programStopped follows.
     void sendStop();
     // Bytes for the running program's INPUT/INKEY$ (the output window), passed through untouched.
@@ -58,6 +62,7 @@ private:
         char letter = 0;
         QByteArray frame;
         int retries = 1;
+        bool repeatable = false;
     };
 
     void onBytes(const QByteArray& bytes);
