@@ -2,12 +2,17 @@
 // checksum: <attn>h (reset), SW1, P{} (erase), P<cr> (append), the text line by line (spaces dropped, CR
 // endings, each line's echo awaited), ESC, SW0, <attn>h — whose answer must equal the sum of every byte
 // written since the first poll (digest §4.8, §4.12). Progress per line; cancel leaves the editor with ESC.
+// Over a damaged wire: a line whose echo differs, a command answered with an error or not at all, or a
+// checksum that differs ends the attempt; the session gets back to the prompt (ESC out of the editor) and
+// the whole download starts again, erasing first, up to kMaxAttempts times. A failure says what the buffer
+// holds (a partial program) and leaves the controller at its prompt, write-protected when it can.
 #pragma once
 
 #include "pmc960_session.h"
 
 #include <QObject>
 #include <QStringList>
+#include <QTimer>
 
 namespace serialport {
 
@@ -27,6 +32,7 @@ public:
 
     void start();
     void cancel();
+    static constexpr int kMaxAttempts = 8; // whole attempts before giving up (a clean wire needs one)
     // The lines sent, as the controller stores them (no spaces, no empty lines).
     const QStringList& lines() const { return m_lines; }
     static QStringList programLines(const QString& text);
@@ -43,11 +49,15 @@ private:
     void onFailed(quint64 id, const QString& reason);
     void next();
     void finish(bool ok, const QString& reason, int error = 0);
+    void attemptFailed(const QString& reason, int error = 0);
+    void beginAttempt();
 
     Pmc960Session& m_session;
     QStringList m_lines;
     Step m_step = Step::ResetChecksum;
     int m_line = 0;
+    int m_attempt = 0;
+    QTimer m_noPrompt; // getting back to the prompt between attempts takes too long: give up
     quint64 m_waiting = 0;
     bool m_cancelled = false;
     Pmc960DownloadResult m_result;

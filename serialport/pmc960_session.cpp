@@ -6,6 +6,7 @@
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <utility>
 
 namespace serialport {
 
@@ -31,7 +32,7 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
     connect(&m_timeout, &QTimer::timeout, this, &Pmc960Session::onTimeout);
     connect(&m_wake, &QTimer::timeout, this, [this] {
         if (m_state != State::WaitingForPrompt) return;
-        write("\r", true);
+        askForPrompt();
         m_wake.start();
     });
     m_settle.setSingleShot(true);
@@ -40,6 +41,7 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         if (m_state != State::WaitingForPrompt || !endsInPrompt()) return;
         m_buffer.clear();
         m_wake.stop();
+        m_resync.clear();
         setState(State::Ready);
         pump();
     });
@@ -85,6 +87,43 @@ void Pmc960Session::cancelPending() {
     auto queue = std::move(m_queue);
     m_queue.clear();
     for (const Request& r : queue) emit failed(r.id, QStringLiteral("cancelled"));
+}
+
+void Pmc960Session::resynchronise(const QByteArray& first) {
+    m_timeout.stop();
+    const auto current = std::exchange(m_current, std::nullopt);
+    m_inEditor = false;
+    m_buffer.clear();
+    m_resync = first;
+    m_silentAsks = 0;
+    setState(State::WaitingForPrompt);
+    askForPrompt();
+    m_wake.start();
+    if (current) emit failed(current->id, QStringLiteral("abandoned to get back to the prompt"));
+}
+
+// The ID in a prompt is taken only when three prompts in a row show it: one damaged prompt must not make
+// resynchronise() address another axis (<attn><wrong ID> would silence the controller for good).
+void Pmc960Session::learnAxisId(char id) {
+    if (id == m_axisId) {
+        m_axisCandidateSeen = 0;
+        return;
+    }
+    m_axisCandidateSeen = id == m_axisCandidate ? m_axisCandidateSeen + 1 : 1;
+    m_axisCandidate = id;
+    if (m_axisCandidateSeen >= 3) m_axisId = id;
+}
+
+// A CR asks for a prompt; after resynchronise() it is preceded by the bytes asked for and, once the
+// controller has stayed silent twice, by <attn><ID> (talker again, in no checksum).
+void Pmc960Session::askForPrompt() {
+    if (!m_resync.isEmpty()) {
+        // Only a controller that stays silent gets <attn><ID>: were the ID learnt wrong, it would deselect one
+        // that answers.
+        if (++m_silentAsks > 2) write(QByteArray(1, kAttention) + m_axisId, false);
+        write(m_resync, true);
+    }
+    write("\r", true);
 }
 
 void Pmc960Session::setStatusPolling(int intervalMs, const QByteArray& letters) {
@@ -140,8 +179,22 @@ bool Pmc960Session::endsInPrompt() const {
 
 void Pmc960Session::onBytes(const QByteArray& bytes) {
     emit rawReceived(bytes);
+    m_silentAsks = 0;
     m_buffer.append(bytes);
     if (m_current) {
+        // The editor's echo ended with a line end yet differs from what was typed: damaged on the wire one
+        // way or the other. Said at once rather than after the time-out.
+        if (m_current->kind == Kind::Expect && m_current->expect.endsWith("\r\n") && m_buffer.contains("\r\n") &&
+            !m_buffer.contains(m_current->expect) && !endsInPrompt()) {
+            const quint64 id = m_current->id;
+            m_timeout.stop();
+            m_current.reset();
+            m_inEditor = true;
+            const QByteArray got = std::exchange(m_buffer, {});
+            emit failed(id, QStringLiteral("the echo differs: \"%1\"").arg(QString::fromLatin1(got.trimmed())));
+            pump();
+            return;
+        }
         const bool done = (m_current->kind == Kind::Command && endsInPrompt()) ||
                           (m_current->kind == Kind::Poll && m_buffer.contains('\r')) ||
                           (m_current->kind == Kind::Expect &&
@@ -150,7 +203,7 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
         return;
     }
     if (!endsInPrompt()) return;
-    m_axisId = m_buffer.at(m_buffer.size() - 2);
+    learnAxisId(m_buffer.at(m_buffer.size() - 2));
     static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
     for (auto it = kError.globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
         const int code = it.next().captured(1).toInt(nullptr, 16);
@@ -191,7 +244,7 @@ void Pmc960Session::complete() {
     case Kind::Command: {
         m_inEditor = false;
         const Pmc960Response response = parse(request);
-        m_axisId = m_buffer.at(m_buffer.size() - 2);
+        learnAxisId(m_buffer.at(m_buffer.size() - 2));
         m_buffer.clear();
         setState(State::Ready);
         emit finished(request.id, response);
@@ -230,7 +283,7 @@ void Pmc960Session::onTimeout() {
     const quint64 id = m_current->id;
     m_current.reset();
     setState(State::WaitingForPrompt); // ask for a prompt until one comes
-    write("\r", true);
+    askForPrompt();
     m_wake.start();
     emit failed(id, QStringLiteral("no answer in time"));
 }

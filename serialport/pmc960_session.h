@@ -43,6 +43,11 @@ public:
     quint64 sendExpecting(const QByteArray& bytes, const QByteArray& expect, int timeoutMs = 3000);
     // Drops every queued request not yet written (each gets failed()).
     void cancelPending();
+    // Back to the prompt from wherever the controller is (in the P editor, deselected by a damaged
+    // <attn><ID>): the request in flight fails, and `first` (e.g. ESC) + CR go out now and again every
+    // 300 ms until a prompt comes, with <attn><ID> once the controller stays silent. For transfers that failed
+    // part-way; queued requests wait for the prompt.
+    void resynchronise(const QByteArray& first);
     // Polls letters (e.g. "gfvm") every intervalMs while the session is ready and idle; 0 stops.
     void setStatusPolling(int intervalMs, const QByteArray& letters);
 
@@ -78,6 +83,8 @@ private:
     void onBytes(const QByteArray& bytes);
     void onLinkOpened();
     void onTimeout();
+    void askForPrompt();
+    void learnAxisId(char id);
     void pump();
     void complete();
     void write(const QByteArray& bytes, bool counted);
@@ -91,6 +98,8 @@ private:
     std::optional<Request> m_current;
     QByteArray m_buffer;
     char m_axisId = '=';
+    char m_axisCandidate = '='; // a different ID seen in the last prompts, taken when three in a row show it
+    int m_axisCandidateSeen = 0;
     quint16 m_sentSum = 0;
     quint64 m_nextId = 1;
     QTimer m_timeout;
@@ -100,6 +109,8 @@ private:
     QByteArray m_statusLetters;
     int m_statusIndex = 0;
     bool m_inEditor = false; // an Expect request left the controller in the P editor: no prompt to wait for
+    QByteArray m_resync;     // resynchronise(): written before each CR that asks for a prompt
+    int m_silentAsks = 0;    // prompts asked for since the controller last sent anything
 };
 
 } // namespace serialport
