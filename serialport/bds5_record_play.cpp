@@ -9,8 +9,8 @@ constexpr int kNothingRecorded = 65; // ERR 65 RECORD NOT READY
 constexpr int kNotRecordable = 89;   // ERR 89 NOT FOR ALARM/HOLD/RECORD
 constexpr int kTooManyPoints = 90;   // ERR 90 TOO MANY POINTS
 constexpr int kRecordPoints = 1000;  // n x variables (L7425)
-// PLAY readings before giving up. A clean wire needs two; at 1 % dropped + 1 % corrupted bytes most
-// recordings come together within ten (tests/serialport/play_campaign_test.cpp).
+// PLAY readings before giving up. A clean wire needs two; at 1 % dropped + 1 % corrupted bytes about nine
+// captures in ten of 20-120 samples come together within sixteen (tests/serialport/play_campaign_test.cpp).
 constexpr int kMaxPlays = 16;
 } // namespace
 
