@@ -15,7 +15,7 @@ check() { if eval "$2"; then passed=$((passed + 1)); else failed=$((failed + 1))
 check "servodesk-cli on PATH" '[ "$(command -v servodesk-cli)" = /usr/bin/servodesk-cli ]'
 check "servodesk-cli --sim send" '[ "$(/usr/bin/servodesk-cli --sim send '"'"'P "HELLO"'"'"')" = HELLO ]'
 check "servodesk-sim --stdio" 'printf "P 6*7\n" | /usr/bin/servodesk-sim --stdio | grep -q "          42"'
-check "screenshot tour" 'xvfb-run -a -s "-screen 0 1920x1200x24" /usr/bin/servodesk --screenshot-tour "$work/tour" > "$work/tour.log" 2>&1 && [ -s "$work/tour/main-window.png" ]'
+check "screenshot tour" 'xvfb-run -a -s "-screen 0 1920x1200x24" /usr/bin/servodesk --screenshot-tour "$work/tour" > "$work/tour.log" 2>&1 && [ -s "$work/tour/main-window.png" ] || { echo "tour log (last 40 lines):"; tail -n 40 "$work/tour.log"; false; }'
 check "man page" '[ -f /usr/share/man/man1/servodesk-cli.1.gz ] || [ -f /usr/share/man/man1/servodesk-cli.1 ]'
 check "desktop entry" '[ -f /usr/share/applications/org.servodesk.ServoDesk.desktop ]'
 echo "installed $(basename "$deb"): $passed checks passed, $failed failed"
