@@ -50,7 +50,7 @@ bool Bds5PlayListing::decided(const Votes& votes) const {
     int second = 0;
     for (const auto& [text, reading] : votes)
         if (&reading != best) second = std::max(second, reading.all);
-    return (best->clean >= 2 && second == 0) || (best->all >= 3 && best->all >= 2 * second + 1);
+    return (best->clean >= cleanCopiesNeeded() && second == 0) || (best->all >= 3 && best->all >= 2 * second + 1);
 }
 
 void Bds5PlayListing::addCopy(const QString& text, bool echoDamaged) {
@@ -138,11 +138,11 @@ bool Bds5PlayListing::complete() const {
     return m_agreed == m_samples * m_variables && headerConfirmed();
 }
 
-// The drive printed exactly the RECORD line asked for, twice, and more often than any other reading of it
+// The drive printed exactly the RECORD line asked for, twice (once on a trusted clean link), and more often than any other reading of it
 // (a RECORD damaged on its way may have set up a recording that differs in one digit, e.g. 3 ms for 1 ms).
 bool Bds5PlayListing::headerConfirmed() const {
     const auto exact = m_headers.find(m_header);
-    if (exact == m_headers.end() || exact->second < 2) return false;
+    if (exact == m_headers.end() || exact->second < cleanCopiesNeeded()) return false;
     for (const auto& [header, count] : m_headers)
         if (header != m_header && count >= exact->second) return false;
     return true;

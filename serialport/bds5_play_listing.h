@@ -14,6 +14,9 @@
 // A value is accepted when two undamaged copies agree on it and no copy reads it otherwise, or when at
 // least three copies agree and outnumber every other reading two to one (a bit flip can turn one digit into
 // another, so two damaged copies may agree by chance; three practically never do).
+// On a link that has shown no damage (setTrustCleanCopy), a first copy without any damage is accepted alone:
+// what a clean copy could still hide is a byte changed into another digit with nothing else touched, which a
+// wire that damages nothing else practically never does; the first damaged or lost copy ends the trust.
 #pragma once
 
 #include <QString>
@@ -35,6 +38,7 @@ public:
     // echoDamaged: Bds5Response::garbled.
     void addCopy(const QString& text, bool echoDamaged);
     void addLostCopy() { ++m_lost; } // the PLAY or its answer was lost on the wire
+    void setTrustCleanCopy(bool trust) { m_trustClean = trust; } // before the first addCopy
 
     bool complete() const;
     QStringList lines() const; // header + samples, as the drive printed them; only when complete()
@@ -57,6 +61,7 @@ private:
     bool validField(const QString& field) const;
     bool decided(const Votes& votes) const;
     bool headerConfirmed() const;
+    int cleanCopiesNeeded() const { return m_trustClean && m_damaged == 0 && m_lost == 0 ? 1 : 2; }
 
     QString m_header;
     int m_samples;
@@ -69,6 +74,7 @@ private:
     int m_copies = 0;
     int m_damaged = 0;
     int m_lost = 0;
+    bool m_trustClean = false;
 };
 
 } // namespace serialport

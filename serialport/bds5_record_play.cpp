@@ -9,7 +9,7 @@ constexpr int kNothingRecorded = 65; // ERR 65 RECORD NOT READY
 constexpr int kNotRecordable = 89;   // ERR 89 NOT FOR ALARM/HOLD/RECORD
 constexpr int kTooManyPoints = 90;   // ERR 90 TOO MANY POINTS
 constexpr int kRecordPoints = 1000;  // n x variables (L7425)
-// PLAY readings before giving up. A clean wire needs two; at 1 % dropped + 1 % corrupted bytes about nine
+// PLAY readings before giving up. A wire that never damaged anything needs one, else a clean copy needs two; at 1 % dropped + 1 % corrupted bytes about nine
 // captures in ten of 20-120 samples come together within sixteen (tests/serialport/play_campaign_test.cpp).
 constexpr int kMaxPlays = 16;
 } // namespace
@@ -159,7 +159,12 @@ void Bds5RecordPlay::tick() {
 void Bds5RecordPlay::sendPlay() {
     m_tick.stop();
     m_stage = Stage::Play;
-    if (!m_listing) m_listing.emplace(m_plan.recordLine().toUpper(), m_plan.samples, int(m_plan.variables.size()));
+    if (!m_listing) {
+        m_listing.emplace(m_plan.recordLine().toUpper(), m_plan.samples, int(m_plan.variables.size()));
+        // A link that has damaged nothing since it opened gets one reading (as Motion Link read it); after
+        // any damage every PLAY is read until the copies agree.
+        m_listing->setTrustCleanCopy(session() && session()->linkTroubles() == 0);
+    }
     ++m_plays;
     emit stageChanged(
         m_plays == 1 ? tr("Reading %n sample(s) (PLAY)", nullptr, m_plan.samples)

@@ -3,8 +3,9 @@
 // rest of a test move, e.g. J 0 200 ms later), waits until n x t ms have passed, and retrieves the samples
 // with PLAY. result.lines holds PLAY's listing (scope::parsePlay reads it). The drive's refusals are
 // surfaced: ERR 89 (not recordable), 90 (too many points), 83 (bad interval), 65 (nothing recorded).
-// PLAY is read at least twice and the copies compared (Bds5PlayListing): a wire that drops or corrupts
-// bytes gives the exact samples after a few more readings, or a failure that says so; never shifted data.
+// PLAY is read once while the link has damaged nothing since it opened (Bds5Session::linkTroubles); after
+// that, at least twice and the copies compared (Bds5PlayListing): a wire that drops or corrupts bytes gives
+// the exact samples after a few more readings, or a failure that says so; never shifted data.
 // GUI thread; never blocks: the wait runs on a timer.
 #pragma once
 

@@ -92,6 +92,7 @@ void Bds5Session::cancelPending() {
 
 void Bds5Session::onLinkOpened() {
     m_tail.clear();
+    m_linkTroubles = 0;
     setState(State::WaitingForPrompt);
     m_wake.start();
 }
@@ -134,6 +135,13 @@ void Bds5Session::onBytes(const QByteArray& bytes) {
     else m_silence.stop();
 }
 
+// "-->TRC OFF": the drive printed a prompt of its own (a program ending, trace) just before the echo. The
+// answer is whole; nothing was damaged on the wire.
+bool Bds5Session::strayPromptBeforeEcho(const QString& text, const QString& line) {
+    const qsizetype at = text.indexOf(line + QStringLiteral("\r\n"));
+    return at > 0 && at <= 8 && text.left(at).endsWith(QLatin1Char('>'));
+}
+
 void Bds5Session::onPromptConfirmed() {
     const auto prompt = trailingPrompt(m_tail);
     if (!prompt) return;
@@ -150,6 +158,7 @@ void Bds5Session::onPromptConfirmed() {
         Pending done = *m_current;
         m_current.reset();
         Bds5Response response = parseResponse(done, std::exchange(m_response, {}), *prompt);
+        m_linkTroubles += response.garbled && !strayPromptBeforeEcho(response.text, done.line);
         if (response.ignored && done.retries > 0) { // the drive flushed a held error: send it again (rule 3)
             --done.retries;
             m_queue.push_front(done);
@@ -173,6 +182,7 @@ void Bds5Session::onTimeout() {
                              .arg(lost.line));
     write("\r"); // ask for a prompt so the queue can go on
     m_resyncing = true;
+    ++m_linkTroubles;
     m_wake.start();
 }
 

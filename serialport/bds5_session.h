@@ -55,6 +55,9 @@ public:
     Bds5Mode mode() const { return m_mode; }
     QString lastPrompt() const { return m_prompt; }
     Link& link() { return m_link; }
+    // Answers the wire damaged (no echo where one belonged) and commands that timed out, since the link
+    // opened. Bds5RecordPlay reads PLAY once while this is 0 and twice (and more) after.
+    int linkTroubles() const { return m_linkTroubles; }
 
 signals:
     void rawReceived(const QByteArray& bytes);   // every byte from the drive, for captures and watchers
@@ -85,6 +88,7 @@ private:
     void setState(State state);
     Bds5Response parseResponse(const Pending& command, QString text, const QString& prompt) const;
     int timeoutMsFor(const QString& line) const;
+    static bool strayPromptBeforeEcho(const QString& text, const QString& line);
 
     Link& m_link;
     State m_state = State::Closed;
@@ -98,6 +102,7 @@ private:
     bool m_rawLineOpen = false; // the terminal user has typed part of a line
     bool m_resyncing = false;   // a command timed out: asking for a prompt until one comes
     quint64 m_nextId = 1;
+    int m_linkTroubles = 0;
     QTimer m_silence;
     QTimer m_timeout;
     QTimer m_wake;

@@ -21,7 +21,9 @@ class ScreenshotTour final : public QObject {
     Q_OBJECT
 public:
     static constexpr QSize kWindowSize{1280, 800};
-    static constexpr int kStepTimeoutMs = 15000;
+    // A hang guard, not a speed goal: the longest step (scope-bode) reads 500 samples of two variables with
+    // PLAY at the simulated 9600 baud, about 14 s, and a loaded CI machine stretches that.
+    static constexpr int kStepTimeoutMs = 45000;
     static constexpr int kPollMs = 50;
 
     struct Step {

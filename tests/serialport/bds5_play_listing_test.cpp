@@ -33,6 +33,27 @@ TEST(Bds5PlayListing, twoCleanCopiesAreEnough) {
     EXPECT_EQ(l.lines(), truth());
 }
 
+TEST(Bds5PlayListing, onATrustedLinkOneCleanCopyIsEnough) {
+    Bds5PlayListing l(kHeader, 4, 2);
+    l.setTrustCleanCopy(true);
+    l.addCopy(listing(truth()), false);
+    ASSERT_TRUE(l.complete());
+    EXPECT_EQ(l.lines(), truth());
+}
+
+TEST(Bds5PlayListing, aDamagedCopyEndsTheTrust) {
+    Bds5PlayListing l(kHeader, 4, 2);
+    l.setTrustCleanCopy(true);
+    QStringList shortened = truth();
+    shortened[2].remove(3, 1);
+    l.addCopy(listing(shortened), false);
+    l.addCopy(listing(truth()), false);
+    EXPECT_FALSE(l.complete()); // one clean copy no longer decides
+    l.addCopy(listing(truth()), false);
+    ASSERT_TRUE(l.complete());
+    EXPECT_EQ(l.lines(), truth());
+}
+
 TEST(Bds5PlayListing, linesRunTogetherKeepTheLinesAfterThemInPlace) {
     Bds5PlayListing l(kHeader, 4, 2);
     QStringList merged = truth();

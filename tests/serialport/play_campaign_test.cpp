@@ -215,14 +215,14 @@ private slots:
         QVERIFY2(t.exact >= captures * 8 / 10, "at 1 % damage at least 80 % of captures come through");
     }
 
-    void aCleanWireReadsEachCaptureTwice() {
+    void aCleanWireReadsEachCaptureOnce() {
         const int captures = 20;
         QElapsedTimer clock;
         clock.start();
         const Tally t = runCampaign(captures, {}, 3344);
         print("PLAY campaign on a clean wire", captures, t, clock.elapsed() / 1000.0);
         QCOMPARE(t.exact, captures);
-        QCOMPARE(t.plays, 2 * captures);
+        QCOMPARE(t.plays, captures); // the link never damaged anything: one reading each (Motion Link's pace)
     }
 };
 
