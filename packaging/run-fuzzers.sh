@@ -21,6 +21,7 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Re
 targets=(
     "bds5_drive_fuzz tests/fuzz tests/fuzz/corpus/bds5 -dict=$root/tests/fuzz/bds5.dict -max_len=4096"
     "host_parsers_fuzz tests/fuzz tests/fuzz/corpus/host -max_len=4096"
+    "capture_files_fuzz tests/fuzz tests/fuzz/corpus/capture -max_len=8192"
     "pmc960_drive_fuzz tests/fuzz tests/drive_core/pmc960/fuzz_corpus -max_len=4096"
     "sc750_compiler_fuzz tests/drive_core tests/drive_core/sc750/examples -max_len=8192"
 )

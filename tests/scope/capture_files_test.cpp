@@ -77,4 +77,6 @@ TEST(CaptureCsv, NamesTheLineItCannotRead) {
     EXPECT_EQ(readCsv("RECORD,2,1,VFB\nTime (s),VFB\n0,1\n0.001,x\n").error, "line 4: \"x\" is not a number");
     EXPECT_EQ(readCsv("RECORD,2,1,VFB\nTime (s),VFB\n0,1,2\n").error, "line 3: 3 values, expected 2");
     EXPECT_EQ(readCsv("").error, "line 1: no column titles");
+    // A column title left empty (capture_files_fuzz): refused, as it could not be written back.
+    EXPECT_EQ(readCsv("Time (s),VFB,\n0,1,2\n").error, "line 1: column 3 has no variable name");
 }
