@@ -28,6 +28,7 @@ public:
     std::string takeSent();
 
     bool busy() const { return m_head < m_fifo.size(); }
+    std::size_t backlog() const { return m_fifo.size() - m_head; } // written, not yet on the line
     bool atLineStart() const { return m_atLineStart; }
     int baud() const { return m_baud; }
 

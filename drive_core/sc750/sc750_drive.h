@@ -83,6 +83,7 @@ public:
     void write(std::string_view text) override;
     std::optional<std::string> takeLine() override;
     std::string takeChar() override;
+    std::size_t outputBacklog() const override { return m_uart.backlog(); }
     double whenSample(int source) override;
     void whenLatch() override;
     void whenAction(int action, int argument, float value) override;

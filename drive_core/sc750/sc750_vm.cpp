@@ -158,6 +158,9 @@ bool Vm::resolveWait(std::int64_t tickCount) {
         m_host.whenAction(m_whenAction, m_whenArg, m_whenActionValue);
         break;
     }
+    case Wait::Output:
+        if (m_host.outputBacklog() > VmHost::kTransmitBuffer) return false;
+        break;
     case Wait::Input: {
         const auto line = m_host.takeLine();
         if (!line) return false;
@@ -224,6 +227,7 @@ void Vm::pushInt(std::int64_t v) {
 void Vm::print(const std::string& text) {
     for (char c : text) m_column = c == '\n' || c == '\r' ? 0 : m_column + 1;
     m_host.write(text);
+    if (m_wait == Wait::None && m_host.outputBacklog() > VmHost::kTransmitBuffer) m_wait = Wait::Output;
 }
 
 void Vm::printPrompt() {

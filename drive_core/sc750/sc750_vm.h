@@ -21,7 +21,7 @@ inline constexpr double kTick_s = 0.000427; // WHEN polling period (L1972), also
 class Vm {
 public:
     enum class State { NoProgram, Loaded, Running, Stopped, AtBreakpoint, Ended, Error };
-    enum class Wait { None, Pause, When, Input };
+    enum class Wait { None, Pause, When, Input, Output };
 
     explicit Vm(VmHost& host) : m_host(host) {}
 

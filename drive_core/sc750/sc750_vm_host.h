@@ -24,6 +24,11 @@ public:
     virtual void write(std::string_view text) = 0;
     virtual std::optional<std::string> takeLine() = 0;
     virtual std::string takeChar() = 0;
+    // Characters written but not yet on the line. A PRINT that leaves more than kTransmitBuffer waiting
+    // holds the program until the line has carried them (DECISIONS.md 38): output never runs ahead of the
+    // serial line, so protocol answers are not queued behind seconds of PRINT output.
+    static constexpr std::size_t kTransmitBuffer = 256;
+    virtual std::size_t outputBacklog() const { return 0; }
     // WHEN: the present value of a condition source (1..16 INPn, 17 POS.COMMAND, 18 POSITION, 19 ENCPOS,
     // 20 ANALOG.IN); latch the WHEN.* variables; perform the action.
     virtual double whenSample(int source) = 0;

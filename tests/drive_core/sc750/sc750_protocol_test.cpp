@@ -96,6 +96,25 @@ TEST(Sc750Protocol, RepliesLeaveAtNineThousandSixHundredBaud) {
     EXPECT_EQ(first + drive.takeTransmitted(), encodeFrame('V', "752,2.8,1,255"));
 }
 
+TEST(Sc750Protocol, APrintLoopRunsAtTheLinesPaceAndAnswersStillComeSoon) {
+    Sc750Drive drive; // 9600 baud: ~960 characters a second
+    Wire wire{drive};
+    drive.setLineRateLimited(false);
+    wire.download(compile("DIM n AS INTEGER\nFOR n = 1 TO 1000000\n  PRINT \"line\"; n\nNEXT n\nEND\n").bin);
+    drive.setLineRateLimited(true);
+    ASSERT_EQ(wire.command('R', "").substr(0, 1), "R");
+    wire.awaitFrame(2.0); // two seconds of printing (no frame comes: the program never ends)
+    // The program waited for the line: about 1,920 characters went out, not the millions it could print.
+    EXPECT_GT(wire.program.size(), 1500u);
+    EXPECT_LT(wire.program.size(), 2400u);
+    // A status request waits behind at most the 256-character buffer (~0.27 s), not seconds of output.
+    drive.receive(encodeFrame('?', ""));
+    const std::string before = wire.program;
+    const std::string status = wire.awaitFrame(0.5);
+    EXPECT_EQ(status.substr(0, 1), "S") << "no status within 0.5 s";
+    EXPECT_LE(wire.program.size() - before.size(), 300u);
+}
+
 TEST(Sc750Protocol, DownloadRunBreakpointVariablesContinue) {
     Sc750Drive drive;
     drive.setLineRateLimited(false);
