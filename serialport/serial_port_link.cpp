@@ -3,8 +3,8 @@
 
 namespace serialport {
 
-SerialPortLink::SerialPortLink(QString portName, int baudRate, QObject* parent)
-    : Link(parent), m_portName(std::move(portName)), m_baudRate(baudRate) {
+SerialPortLink::SerialPortLink(QString portName, int baudRate, FlowControl flow, QObject* parent)
+    : Link(parent), m_portName(std::move(portName)), m_baudRate(baudRate), m_flow(flow) {
     connect(&m_port, &QSerialPort::readyRead, this, [this] { emit bytesReceived(m_port.readAll()); });
     connect(&m_port, &QSerialPort::errorOccurred, this, &SerialPortLink::onError);
 }
@@ -18,7 +18,7 @@ void SerialPortLink::open() {
     m_port.setDataBits(QSerialPort::Data8);
     m_port.setParity(QSerialPort::NoParity);
     m_port.setStopBits(QSerialPort::OneStop);
-    m_port.setFlowControl(QSerialPort::NoFlowControl);
+    m_port.setFlowControl(m_flow == FlowControl::Hardware ? QSerialPort::HardwareControl : QSerialPort::NoFlowControl);
     if (!m_port.open(QIODevice::ReadWrite)) {
         // onError has already reported the reason through errorOccurred.
         return;
@@ -42,7 +42,12 @@ void SerialPortLink::write(const QByteArray& bytes) {
     m_port.write(bytes);
 }
 
-QString SerialPortLink::description() const { return QStringLiteral("%1 %2 8N1").arg(m_portName).arg(m_baudRate); }
+QString SerialPortLink::description() const {
+    return QStringLiteral("%1 %2 8N1%3")
+        .arg(m_portName)
+        .arg(m_baudRate)
+        .arg(m_flow == FlowControl::Hardware ? QStringLiteral(" RTS/CTS") : QString());
+}
 
 void SerialPortLink::onError(QSerialPort::SerialPortError error) {
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError) return;

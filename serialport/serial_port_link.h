@@ -12,8 +12,12 @@ namespace serialport {
 class SerialPortLink final : public Link {
     Q_OBJECT
 public:
-    // portName: "ttyUSB0", "/dev/ttyUSB0" or a pty path "/dev/pts/5". 8N1, no flow control (BDS5 §2.1).
-    SerialPortLink(QString portName, int baudRate, QObject* parent = nullptr);
+    // None: the BDS5 and SC750 (three-wire RS-232, BDS5 §2.1). Hardware: RTS/CTS, for the PMC-960, whose
+    // one-byte receive buffer overruns unless the host waits while CTS is off (seed-pmc960 §4.1).
+    enum class FlowControl { None, Hardware };
+
+    // portName: "ttyUSB0", "/dev/ttyUSB0" or a pty path "/dev/pts/5". 8N1.
+    SerialPortLink(QString portName, int baudRate, FlowControl flow = FlowControl::None, QObject* parent = nullptr);
     ~SerialPortLink() override;
 
     void open() override;
@@ -22,6 +26,7 @@ public:
     void write(const QByteArray& bytes) override;
     QString description() const override;
     int baudRate() const override { return m_baudRate; }
+    FlowControl flowControl() const { return m_flow; }
     // Three characters' time at the baud rate, and never under the 16 ms a USB adapter may hold bytes.
     int quietMs() const override { return std::max(20, 30 * 1000 / std::max(m_baudRate, 1)); }
 
@@ -31,6 +36,7 @@ private:
     QSerialPort m_port;
     QString m_portName;
     int m_baudRate;
+    FlowControl m_flow;
 };
 
 } // namespace serialport

@@ -35,7 +35,12 @@ void ConnectionChoice::save(QSettings& settings) const {
 }
 
 std::unique_ptr<serialport::Link> ConnectionChoice::makeLink() const {
-    if (kind == Kind::SerialPort) return std::make_unique<serialport::SerialPortLink>(portName, baudRate);
+    if (kind == Kind::SerialPort) {
+        // The PMC-960 needs RTS/CTS on a real port (its 1-byte receive buffer); the others use three wires.
+        const auto flow = family == drive_core::DriveFamily::Pmc960 ? serialport::SerialPortLink::FlowControl::Hardware
+                                                                   : serialport::SerialPortLink::FlowControl::None;
+        return std::make_unique<serialport::SerialPortLink>(portName, baudRate, flow);
+    }
     return std::make_unique<serialport::SimulatorLink>(
         family, serialport::SimulatorLink::Options{.baudRate = baudRate});
 }
