@@ -138,6 +138,9 @@ void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
     }
     connect(workspace, &FamilyWorkspace::statusChanged, this, &MainWindow::updateLinkStatus);
     connect(workspace, &FamilyWorkspace::message, this, &MainWindow::showLinkError);
+    connect(workspace, &FamilyWorkspace::terminalReceived, this, [this, workspace](const QByteArray& bytes) {
+        if (workspace == this->workspace(m_family)) terminal()->displayBytes(bytes);
+    });
     showFamily(m_family);
 }
 
@@ -307,8 +310,8 @@ void MainWindow::createStatusBar() {
 
 void MainWindow::wireConnection() {
     TerminalWidget* term = terminal();
-    connect(term, &TerminalWidget::bytesTyped, m_connection, &DriveConnection::sendRaw);
-    connect(term, &TerminalWidget::urgentBytesTyped, m_connection, &DriveConnection::sendUrgent);
+    connect(term, &TerminalWidget::bytesTyped, this, [this](const QByteArray& b) { typeIntoTerminal(b, false); });
+    connect(term, &TerminalWidget::urgentBytesTyped, this, [this](const QByteArray& b) { typeIntoTerminal(b, true); });
     connect(m_connection, &DriveConnection::shownReceived, term, &TerminalWidget::displayBytes);
     connect(m_connection, &DriveConnection::modeChanged, this, &MainWindow::showMode);
     connect(m_connection, &DriveConnection::linkChanged, this, &MainWindow::updateLinkStatus);
@@ -319,6 +322,18 @@ void MainWindow::wireConnection() {
     });
     connect(m_connection, &DriveConnection::sessionStateChanged, this, &MainWindow::showState);
     connect(m_connection, &DriveConnection::errorOccurred, this, &MainWindow::showLinkError);
+}
+
+// The terminal talks to the active family: the BDS5 connection, or a workspace that has a terminal (the
+// PMC-960). The SC750's program I/O has Motion Dialogue's Output window instead; typing here says so once.
+void MainWindow::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
+    FamilyWorkspace* active = m_family == drive_core::DriveFamily::Bds5 ? nullptr : workspace(m_family);
+    if (!active) return urgent ? m_connection->sendUrgent(bytes) : m_connection->sendRaw(bytes);
+    if (active->typeIntoTerminal(bytes, urgent) || m_terminalHintShown == m_family) return;
+    m_terminalHintShown = m_family;
+    terminal()->displayNotice(tr("The %1 has no terminal: its program's PRINT and INPUT are in the Output window "
+                                 "(F4).")
+                                  .arg(ConnectionChoice::familyName(m_family)));
 }
 
 void MainWindow::followEditor(editor::ProgramEditor* current) {

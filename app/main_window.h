@@ -6,6 +6,8 @@
 
 #include "serialport/bds5_session.h"
 
+#include <optional>
+
 #include <QMainWindow>
 
 class QMenu;
@@ -100,6 +102,7 @@ private:
     void createDriveTools(); // drive and debug toolbars, capture, options, help (before createMenus)
     void createStatusBar();
     void wireConnection();
+    void typeIntoTerminal(const QByteArray& bytes, bool urgent);
     void followEditor(editor::ProgramEditor* current); // outline, diagnostics count, F1 -> reference
     void updateTitle();
     void updateLinkStatus();
@@ -139,6 +142,7 @@ private:
     QList<QAction*> m_bds5Only; // menus, toolbars and Drive-menu actions that act on the BDS5 session
     QList<FamilyWorkspace*> m_workspaces;
     drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
+    std::optional<drive_core::DriveFamily> m_terminalHintShown; // "has no terminal" said for this family
     bool m_closeConfirmed = false;
     bool m_layoutRestored = false;
     bool m_shownOnce = false;

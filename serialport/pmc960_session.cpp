@@ -27,6 +27,8 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         m_wake.stop();
         if (m_current) emit failed(m_current->id, QStringLiteral("link closed"));
         m_current.reset();
+        m_heldTyped.clear();
+        m_typedLineOpen = false;
         setState(State::Closed);
     });
     connect(&m_timeout, &QTimer::timeout, this, &Pmc960Session::onTimeout);
@@ -46,7 +48,8 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         pump();
     });
     connect(&m_statusTimer, &QTimer::timeout, this, [this] {
-        if (m_state != State::Ready || m_current || !m_queue.empty() || m_statusLetters.isEmpty()) return;
+        if (m_state != State::Ready || m_current || !m_queue.empty() || m_statusLetters.isEmpty() || m_typedLineOpen)
+            return;
         Request r;
         r.id = m_nextId++;
         r.kind = Kind::Poll;
@@ -83,6 +86,11 @@ quint64 Pmc960Session::sendExpecting(const QByteArray& bytes, const QByteArray& 
     return m_nextId++;
 }
 
+void Pmc960Session::sendTyped(const QByteArray& bytes) {
+    m_heldTyped += bytes;
+    pump();
+}
+
 void Pmc960Session::cancelPending() {
     auto queue = std::move(m_queue);
     m_queue.clear();
@@ -93,6 +101,7 @@ void Pmc960Session::resynchronise(const QByteArray& first) {
     m_timeout.stop();
     const auto current = std::exchange(m_current, std::nullopt);
     m_inEditor = false;
+    m_typedLineOpen = false;
     m_buffer.clear();
     m_resync = first;
     m_silentAsks = 0;
@@ -154,7 +163,12 @@ void Pmc960Session::setState(State state) {
 }
 
 void Pmc960Session::pump() {
-    if (m_current || m_queue.empty()) return;
+    if (m_current) return;
+    if (!m_heldTyped.isEmpty() && (m_state == State::Ready || m_state == State::Busy)) {
+        m_typedLineOpen = true;
+        write(std::exchange(m_heldTyped, {}), true);
+    }
+    if (m_typedLineOpen || m_queue.empty()) return;
     // Everything waits for the prompt, except that polls and the editor's text need none (the editor
     // gives no prompt until ESC, and a poll is answered at any time).
     const Kind next = m_queue.front().kind;
@@ -179,13 +193,16 @@ bool Pmc960Session::endsInPrompt() const {
 
 void Pmc960Session::onBytes(const QByteArray& bytes) {
     emit rawReceived(bytes);
+    if (!m_current) emit shownReceived(bytes);
     m_silentAsks = 0;
     m_buffer.append(bytes);
     if (m_current) {
         // The editor's echo ended with a line end yet differs from what was typed: damaged on the wire one
         // way or the other. Said at once rather than after the time-out.
+        // An error code on its way (#C1 buffer full: the editor stops and prompts) is not a damaged echo: the
+        // prompt that follows ends the request with the controller's own error.
         if (m_current->kind == Kind::Expect && m_current->expect.endsWith("\r\n") && m_buffer.contains("\r\n") &&
-            !m_buffer.contains(m_current->expect) && !endsInPrompt()) {
+            !m_buffer.contains(m_current->expect) && !endsInPrompt() && !m_buffer.contains('#')) {
             const quint64 id = m_current->id;
             m_timeout.stop();
             m_current.reset();
@@ -214,6 +231,8 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
         return;
     }
     m_buffer.clear();
+    m_typedLineOpen = false; // the user's command is done: our requests may go
+    pump();
 }
 
 Pmc960Response Pmc960Session::parse(const Request& request) const {

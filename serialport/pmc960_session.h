@@ -41,6 +41,10 @@ public:
     // Queues bytes that produce no prompt (program text in the P editor): written in turn, finished()
     // follows once `expect` has arrived (the editor's echo), or at once if expect is empty.
     quint64 sendExpecting(const QByteArray& bytes, const QByteArray& expect, int timeoutMs = 3000);
+    // Bytes typed in the terminal, written as they are (in the checksum) once no request is in flight. From
+    // the first typed byte until the controller's next prompt the line is the user's: queued requests and
+    // status polls wait, so neither the user's command nor ours is cut in two.
+    void sendTyped(const QByteArray& bytes);
     // Drops every queued request not yet written (each gets failed()).
     void cancelPending();
     // Back to the prompt from wherever the controller is (in the P editor, deselected by a damaged
@@ -61,6 +65,8 @@ public:
 
 signals:
     void rawReceived(const QByteArray& bytes);
+    // The same, less the answers to the session's own requests and polls: what the terminal shows.
+    void shownReceived(const QByteArray& bytes);
     void stateChanged(serialport::Pmc960Session::State state);
     void finished(quint64 id, const serialport::Pmc960Response& response);
     void pollAnswered(quint64 id, char letter, const QString& value);
@@ -111,6 +117,8 @@ private:
     bool m_inEditor = false; // an Expect request left the controller in the P editor: no prompt to wait for
     QByteArray m_resync;     // resynchronise(): written before each CR that asks for a prompt
     int m_silentAsks = 0;    // prompts asked for since the controller last sent anything
+    QByteArray m_heldTyped;  // sendTyped() bytes waiting for the request in flight
+    bool m_typedLineOpen = false; // the user typed since the last prompt
 };
 
 } // namespace serialport

@@ -35,12 +35,21 @@ public:
     virtual bool isConnected() const = 0;
     // For the status bar: "SC750 axis 255, Ready" and similar.
     virtual QString statusText() const = 0;
+    // The Terminal dock while this workspace is active: bytes typed there (urgent: ^X, Esc). False when the
+    // family has no terminal of its own (the main window then says where to type instead).
+    virtual bool typeIntoTerminal(const QByteArray& bytes, bool urgent) {
+        Q_UNUSED(bytes);
+        Q_UNUSED(urgent);
+        return false;
+    }
 
 signals:
     // statusText() or isConnected() changed.
     void statusChanged();
     // A message for the status bar and the terminal ("The controller did not answer...").
     void message(const QString& text);
+    // Bytes from the drive for the Terminal dock (the answers to the user's typing, not to polls).
+    void terminalReceived(const QByteArray& bytes);
 };
 
 } // namespace app

@@ -86,11 +86,22 @@ void Pmc960Workspace::activate(const ConnectionChoice& choice) {
         emit statusChanged();
     });
     connect(m_session.get(), &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
+    connect(m_session.get(), &serialport::Pmc960Session::shownReceived, this, &Pmc960Workspace::terminalReceived);
     connect(m_session.get(), &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
         emit message(tr("PMC-960: %1").arg(Pmc960ProgramTransfer::describeError(code)));
     });
     m_link->open();
     if (m_link->isOpen() && !m_connected) onOpened();
+}
+
+bool Pmc960Workspace::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
+    if (!m_connected) {
+        emit message(tr("The PMC-960 is not connected (Drive > Connect): nothing was sent."));
+        return true;
+    }
+    if (urgent && bytes == "\x1b") stop();
+    else m_session->sendTyped(bytes);
+    return true;
 }
 
 void Pmc960Workspace::onOpened() {

@@ -32,6 +32,8 @@ public:
     void deactivate() override;
     bool isConnected() const override;
     QString statusText() const override;
+    // MPL is typed at the controller's } prompt: the Terminal talks to it (Esc = Stop).
+    bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 
     // The session while the link is open, else nullptr.
     serialport::Pmc960Session* session() const { return m_connected ? m_session.get() : nullptr; }

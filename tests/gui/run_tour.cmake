@@ -17,7 +17,7 @@ else()
     set(command "${SERVODESK}")
 endif()
 execute_process(COMMAND ${command} --screenshot-tour "${OUT_DIR}"
-                RESULT_VARIABLE result TIMEOUT 90)
+                RESULT_VARIABLE result TIMEOUT 210)
 if(NOT result EQUAL 0)
     message(FATAL_ERROR "screenshot tour (${PLATFORM}) failed: ${result}")
 endif()

@@ -55,6 +55,29 @@ private slots:
         QCOMPARE(run(f.session, "I100+").error, 0xB6); // the drive is not enabled
     }
 
+    void typedBytesHoldTheLineUntilThePromptAndShowInTheTerminal() {
+        Fixture f;
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 5000);
+        QByteArray shown;
+        connect(&f.session, &Pmc960Session::shownReceived, this, [&shown](const QByteArray& b) { shown += b; });
+        f.session.setStatusPolling(20, "f");
+        QSignalSpy finished(&f.session, &Pmc960Session::finished);
+        QSignalSpy polled(&f.session, &Pmc960Session::statusPolled);
+        // The user types half a command: neither a queued command nor a poll cuts into it.
+        f.session.sendTyped("A12");
+        const quint64 id = f.session.send("V?");
+        QTest::qWait(300);
+        QCOMPARE(finished.count(), 0);
+        QCOMPARE(polled.count(), 0);
+        f.session.sendTyped("34\r");
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(finished.first().at(0).value<quint64>(), id);
+        QCOMPARE(run(f.session, "A?").value, QStringLiteral("1234")); // the typed command reached the controller
+        QVERIFY2(shown.contains("A1234\r\n"), shown.constData());          // its echo is the terminal's
+        QVERIFY2(!shown.contains("V?"), shown.constData());                 // the session's own answers are not
+        QTRY_VERIFY_WITH_TIMEOUT(polled.count() > 0, 2000);                 // polls resume after the prompt
+    }
+
     void pollsGoBetweenCommands() {
         Fixture f;
         QSignalSpy polled(&f.session, &Pmc960Session::pollAnswered);
