@@ -238,7 +238,15 @@ void MainWindow::createMenus() {
     m_optionsController->addToMenu(menuBar()->addMenu(tr("&Options")));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("BDS5 &Reference"), this, [this] { m_helpBrowser->showTopic(QStringLiteral("MA")); });
+    // Motion Dialogue's Help menu (Index, General, Editor Commands, About) for every family: the reference
+    // and the introduction follow the family chosen in Drive > Connect.
+    QAction* reference = help->addAction(tr("BDS5 &Reference"), this, [this] {
+        m_helpBrowser->showTopic(m_family == drive_core::DriveFamily::Bds5 ? QStringLiteral("MA") : QStringLiteral("intro"));
+    });
+    connect(this, &MainWindow::familyChanged, this, [this, reference](drive_core::DriveFamily family) {
+        m_helpBrowser->setFamily(family);
+        reference->setText(tr("%1 &Reference").arg(ConnectionChoice::familyName(family)));
+    });
     help->addAction(tr("&Introduction"), this, [this] { m_helpBrowser->showTopic(QStringLiteral("intro")); });
     help->addAction(tr("Classic Editor &Keys"), m_editorArea, &EditorArea::showClassicKeys);
     help->addSeparator();

@@ -1,7 +1,9 @@
 // HelpBrowser: list, search and pages.
 #include "help_browser.h"
 
-#include "reference_topics.h"
+#include "family_topics.h"
+
+#include "app/drive/connection_choice.h"
 
 #include <QHeaderView>
 #include <QLabel>
@@ -15,16 +17,33 @@
 namespace app {
 
 namespace {
-constexpr int kIndexRole = Qt::UserRole; // the topic's index in ReferenceTopics::all()
-
-const ReferenceTopic& topicOf(const QTreeWidgetItem* item) {
-    return ReferenceTopics::all().at(item->data(0, kIndexRole).toInt());
-}
+constexpr int kIndexRole = Qt::UserRole; // the topic's index in FamilyTopics::of(family)
 } // namespace
+
+const ReferenceTopic& HelpBrowser::topicOf(const QTreeWidgetItem* item) const {
+    return m_topics->at(item->data(0, kIndexRole).toInt());
+}
+
+void HelpBrowser::setFamily(drive_core::DriveFamily family) {
+    if (family == m_family) return;
+    m_family = family;
+    m_topics = &FamilyTopics::of(family);
+    setWindowTitle(tr("%1 Reference").arg(ConnectionChoice::familyName(family)));
+    m_search->blockSignals(true);
+    m_search->clear();
+    m_search->blockSignals(false);
+    m_list->clear();
+    fill();
+    m_currentKey.clear();
+    if (m_list->topLevelItemCount() > 0) { // the family's introduction page comes first
+        m_list->setCurrentItem(m_list->topLevelItem(0));
+        select(m_list->currentItem());
+    }
+}
 
 HelpBrowser::HelpBrowser(QWidget* parent)
     : QDockWidget(tr("BDS5 Reference"), parent), m_search(new QLineEdit), m_list(new QTreeWidget),
-      m_page(new QTextBrowser), m_count(new QLabel) {
+      m_page(new QTextBrowser), m_count(new QLabel), m_topics(&ReferenceTopics::all()) {
     setObjectName(QStringLiteral("helpBrowser"));
     m_search->setObjectName(QStringLiteral("helpSearch"));
     m_search->setPlaceholderText(tr("Search commands, variables, errors..."));
@@ -59,8 +78,8 @@ HelpBrowser::HelpBrowser(QWidget* parent)
 
 void HelpBrowser::fill() {
     QTreeWidgetItem* groups[4] = {};
-    const QString names[4] = {tr("Introduction"), tr("Commands"), tr("Variables"), tr("Errors")};
-    const QList<ReferenceTopic>& topics = ReferenceTopics::all();
+    const QStringList names = FamilyTopics::groupNames(m_family);
+    const QList<ReferenceTopic>& topics = *m_topics;
     for (int index = 0; index < topics.size(); ++index) {
         const ReferenceTopic& topic = topics[index];
         const int g = int(topic.kind);
@@ -138,12 +157,12 @@ bool HelpBrowser::showTopic(const QString& name) {
     if (isHidden()) placeFirstTime();
     show();
     raise();
-    const auto topic = ReferenceTopics::find(name);
+    const auto topic = FamilyTopics::find(m_family, name);
     if (!topic) {
         setSearch(name);
-        m_page->setHtml(tr("<p>The BDS5 has no command, variable or error <b>%1</b>. Topics that mention it "
+        m_page->setHtml(tr("<p>The %1 has no command, variable or error <b>%2</b>. Topics that mention it "
                            "are listed on the left.</p>")
-                            .arg(name.toHtmlEscaped()));
+                            .arg(ConnectionChoice::familyName(m_family), name.toHtmlEscaped()));
         m_currentKey.clear();
         return false;
     }
@@ -165,7 +184,7 @@ void HelpBrowser::select(QTreeWidgetItem* item) {
     if (!item || item->data(0, kIndexRole).isNull()) return;
     const ReferenceTopic& topic = topicOf(item);
     m_currentKey = topic.key;
-    m_page->setHtml(ReferenceTopics::html(topic));
+    m_page->setHtml(FamilyTopics::html(topic));
 }
 
 QString HelpBrowser::pageText() const {

@@ -4,6 +4,10 @@
 // The first time it opens as a window of its own, big enough to read; the user may dock it anywhere.
 #pragma once
 
+#include "reference_topics.h"
+
+#include "drive_core/drive.h"
+
 #include <QDockWidget>
 
 class QLabel;
@@ -25,6 +29,10 @@ public:
     bool showTopic(const QString& name);
     // Filters the list as if typed in the search box.
     void setSearch(const QString& text);
+    // The reference shown: the BDS5's (the default), the SC750's or the PMC-960's. The main window follows
+    // the family chosen in Drive > Connect.
+    void setFamily(drive_core::DriveFamily family);
+    drive_core::DriveFamily family() const { return m_family; }
 
     QString currentKey() const { return m_currentKey; } // the shown topic's key, "" for none
     QString pageText() const;                           // the shown page as plain text
@@ -32,6 +40,7 @@ public:
 
 private:
     void fill();
+    const ReferenceTopic& topicOf(const QTreeWidgetItem* item) const;
     void filter(const QString& text);
     void select(QTreeWidgetItem* item);
 
@@ -45,6 +54,8 @@ private:
     QString m_currentKey;
     QSplitter* m_splitter;
     bool m_placed = false;
+    drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
+    const QList<ReferenceTopic>* m_topics = nullptr;
 };
 
 } // namespace app

@@ -16,6 +16,7 @@ struct ReferenceTopic {
     QString key;     // how showTopic() names it: "MA", "VMAX", "X" (the family of X1-X250), "ERR 25", "intro"
     QString title;   // the list's text: "MA — MOVE ABSOLUTE", "ERR 25 PE OVERFLOW"
     QString summary; // searched with the key and title: description or meaning
+    QString html;    // the page, when made with the topic (other families); else ReferenceTopics::html
 };
 
 class ReferenceTopics {

@@ -20,6 +20,7 @@
 #include <QLineEdit>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QMenuBar>
 #include <QTest>
 
 using app::AppOptions;
@@ -187,6 +188,42 @@ private slots:
         QCOMPARE(help.visibleTopicCount(), all);
         QVERIFY(help.showTopic(QStringLiteral("intro")));
         QVERIFY(help.pageText().contains(QStringLiteral("F3")));
+    }
+
+    void theReferenceFollowsTheDriveFamily() {
+        MainWindow window;
+        window.show();
+        window.connectDrive(app::ConnectionChoice::simulator(drive_core::DriveFamily::Sc750));
+        app::HelpBrowser* help = window.helpBrowser();
+        QCOMPARE(help->windowTitle(), QStringLiteral("SC750 Reference"));
+        QVERIFY(help->showTopic(QStringLiteral("go.vel")));
+        QCOMPARE(help->currentKey(), QStringLiteral("GO.VEL"));
+        QVERIFY(help->pageText().contains(QStringLiteral("Statement")));
+        QVERIFY(help->showTopic(QStringLiteral("RUN.SPEED")));
+        QVERIFY(help->pageText().contains(QStringLiteral("Range")));
+        QVERIFY(help->showTopic(QStringLiteral("FAULT 4")));
+        QVERIFY(help->pageText().contains(QStringLiteral("front panel")));
+        QVERIFY(!help->showTopic(QStringLiteral("VMAX"))); // a BDS5 variable: not the SC750's
+        QVERIFY(help->showTopic(QStringLiteral("intro")));
+        QVERIFY(help->pageText().contains(QStringLiteral("Ctrl+R")));
+
+        window.connectDrive(app::ConnectionChoice::simulator(drive_core::DriveFamily::Pmc960));
+        QCOMPARE(help->windowTitle(), QStringLiteral("PMC-960 Reference"));
+        QVERIFY(help->showTopic(QStringLiteral("#b6")));
+        QVERIFY(help->pageText().contains(QStringLiteral("#B6")));
+        QVERIFY(help->showTopic(QStringLiteral("TGP")));
+        QVERIFY(help->pageText().contains(QStringLiteral("Range")));
+        const QStringList texts = [&window] {
+            QStringList out;
+            for (QAction* menu : window.menuBar()->actions())
+                if (menu->menu())
+                    for (QAction* a : menu->menu()->actions()) out << a->text();
+            return out;
+        }();
+        QVERIFY(texts.contains(QStringLiteral("PMC-960 &Reference")));
+
+        window.connectDrive(app::ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
+        QVERIFY(help->showTopic(QStringLiteral("VMAX")));
     }
 
     void helpMenuOpensTheReference() {
