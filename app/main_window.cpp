@@ -19,6 +19,7 @@
 #include "scope/scope_controller.h"
 #include "dep01/dep01_panel.h"
 #include "errors/error_log_dock.h"
+#include "errors/error_source.h"
 #include "errors/program_line_jump.h"
 #include "io/io_panel.h"
 #include "variables/variables_dock.h"
@@ -136,6 +137,7 @@ void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
         dock->hide();
         m_viewMenu->addAction(dock->toggleViewAction());
     }
+    if (ErrorSource* errors = workspace->errorSource()) m_errorLogDock->addSource(errors);
     connect(workspace, &FamilyWorkspace::statusChanged, this, &MainWindow::updateLinkStatus);
     connect(workspace, &FamilyWorkspace::message, this, &MainWindow::showLinkError);
     connect(workspace, &FamilyWorkspace::terminalReceived, this, [this, workspace](const QByteArray& bytes) {
@@ -172,6 +174,7 @@ void MainWindow::showFamily(drive_core::DriveFamily family) {
                  m_dep01Panel, m_captureDock})
             dock->hide();
     }
+    m_errorLogDock->setFamily(family); // the one Error Log shows the chosen family's errors
     if (m_family == family) return;
     m_family = family;
     emit familyChanged(family);

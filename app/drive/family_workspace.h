@@ -19,6 +19,8 @@ class QMenu;
 
 namespace app {
 
+class ErrorSource;
+
 class FamilyWorkspace : public QObject {
     Q_OBJECT
 public:
@@ -35,6 +37,8 @@ public:
     virtual bool isConnected() const = 0;
     // For the status bar: "SC750 axis 255, Ready" and similar.
     virtual QString statusText() const = 0;
+    // The family's errors for the Error Log dock (owned by the workspace), or nullptr.
+    virtual ErrorSource* errorSource() const { return nullptr; }
     // The Terminal dock while this workspace is active: bytes typed there (urgent: ^X, Esc). False when the
     // family has no terminal of its own (the main window then says where to type instead).
     virtual bool typeIntoTerminal(const QByteArray& bytes, bool urgent) {

@@ -1,10 +1,9 @@
-// ErrorLogDock: ERR HIST, live errors, clear and export.
+// ErrorLogDock: one table, the chosen family's source behind it; read, clear and export.
 #include "error_log_dock.h"
 
-#include "drive_connection.h"
+#include "bds5_error_source.h"
 #include "error_log_model.h"
 
-#include <QDateTime>
 #include <QFile>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -16,99 +15,107 @@
 
 namespace app {
 
-ErrorLogDock::ErrorLogDock(DriveConnection& connection, QWidget* parent)
-    : QDockWidget(tr("Error Log"), parent), m_connection(connection), m_model(new ErrorLogModel(this)) {
+ErrorLogDock::ErrorLogDock(DriveConnection& connection, QWidget* parent) : QDockWidget(tr("Error Log"), parent) {
     setObjectName(QStringLiteral("errorLogDock"));
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
     auto* bar = new QHBoxLayout;
-    auto* read = new QPushButton(tr("Read History"), body);
-    read->setToolTip(tr("ERR HIST: the drive's 20 most recent errors, newest first"));
-    auto* clear = new QPushButton(tr("Clear"), body);
-    clear->setToolTip(tr("ERR CLR: clears the drive's error history"));
+    m_read = new QPushButton(body);
+    m_read->setObjectName(QStringLiteral("errorLogRead"));
+    m_clear = new QPushButton(tr("Clear"), body);
     auto* save = new QPushButton(tr("Export..."), body);
-    bar->addWidget(read);
-    bar->addWidget(clear);
+    bar->addWidget(m_read);
+    bar->addWidget(m_clear);
     bar->addWidget(save);
     bar->addStretch(1);
     layout->addLayout(bar);
     m_view = new QTableView(body);
-    m_view->setModel(m_model);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->setWordWrap(false);
-    m_view->setColumnWidth(ErrorLogModel::Severity, 100);
-    m_view->setColumnWidth(ErrorLogModel::Code, 50);
-    m_view->setColumnWidth(ErrorLogModel::Message, 260);
-    m_view->setColumnWidth(ErrorLogModel::Line, 50);
-    m_view->setColumnWidth(ErrorLogModel::Source, 90);
     layout->addWidget(m_view, 1);
     m_status = new QLabel(body);
     m_status->setObjectName(QStringLiteral("errorLogStatus"));
     layout->addWidget(m_status);
     setWidget(body);
 
-    connect(read, &QPushButton::clicked, this, &ErrorLogDock::readHistory);
-    connect(clear, &QPushButton::clicked, this, &ErrorLogDock::clearHistory);
+    connect(m_read, &QPushButton::clicked, this, &ErrorLogDock::readHistory);
+    connect(m_clear, &QPushButton::clicked, this, &ErrorLogDock::clearHistory);
     connect(save, &QPushButton::clicked, this, &ErrorLogDock::exportWithDialog);
     connect(m_view, &QTableView::activated, this, &ErrorLogDock::activate);
-    connect(&m_connection, &DriveConnection::rawReceived, this, &ErrorLogDock::onBytes);
-    setStatus(tr("Double-click an error that names a line to go there."));
+    addSource(new Bds5ErrorSource(connection, this));
+    showSource(m_sources.first());
 }
 
-void ErrorLogDock::follow() {
-    serialport::Bds5Session* session = m_connection.session();
-    if (session == m_session) return;
-    m_session = session;
-    if (session) connect(session, &serialport::Bds5Session::finished, this, &ErrorLogDock::onFinished);
+void ErrorLogDock::addSource(ErrorSource* source) {
+    m_sources.append(source);
+    // A workspace's source may go before the dock (the dock's own, the BDS5's, goes with it).
+    if (source->parent() != this)
+        connect(source, &QObject::destroyed, this, [this, source] {
+            m_sources.removeAll(source);
+            if (m_current == source) showSource(m_sources.first());
+        });
+    connect(source, &ErrorSource::statusChanged, this, [this, source](const QString& text) {
+        if (source == m_current) setStatus(text);
+    });
+}
+
+ErrorSource* ErrorLogDock::source(drive_core::DriveFamily family) const {
+    // The last one added for a family wins, as with workspaces.
+    for (auto it = m_sources.crbegin(); it != m_sources.crend(); ++it)
+        if ((*it)->family() == family) return *it;
+    return nullptr;
+}
+
+void ErrorLogDock::setFamily(drive_core::DriveFamily family) {
+    if (ErrorSource* s = source(family)) showSource(s);
+}
+
+void ErrorLogDock::showSource(ErrorSource* source) {
+    if (source == m_current) return;
+    m_current = source;
+    m_view->setModel(&source->model());
+    m_view->setColumnWidth(ErrorLogModel::Severity, 100);
+    m_view->setColumnWidth(ErrorLogModel::Code, 50);
+    m_view->setColumnWidth(ErrorLogModel::Message, 260);
+    m_view->setColumnWidth(ErrorLogModel::Line, 50);
+    m_view->setColumnWidth(ErrorLogModel::Source, 90);
+    m_read->setText(source->readText());
+    m_read->setToolTip(source->readToolTip());
+    m_read->setVisible(!source->readText().isEmpty());
+    m_clear->setToolTip(source->clearToolTip());
+    setStatus(source->statusText().isEmpty() ? tr("Double-click an error that names a line to go there.")
+                                             : source->statusText());
+}
+
+ErrorLogModel& ErrorLogDock::model() const {
+    return m_current->model();
 }
 
 void ErrorLogDock::readHistory() {
-    follow();
-    if (!m_session || !m_connection.isConnected()) return setStatus(tr("Not connected: the history was not read."));
-    m_historyId = m_session->send(QStringLiteral("ERR HIST"));
-    setStatus(tr("Reading the error history (ERR HIST)..."));
+    m_current->read();
 }
 
 void ErrorLogDock::clearHistory() {
-    follow();
-    if (!m_session || !m_connection.isConnected()) return setStatus(tr("Not connected: nothing was cleared."));
-    m_model->clear();
-    m_session->send(QStringLiteral("ERR CLR"));
-    readHistory();
-}
-
-void ErrorLogDock::onFinished(quint64 id, const serialport::Bds5Response& response) {
-    if (id != m_historyId) return;
-    m_historyId = 0;
-    // The listing's lines look like error lines, so the session may have filed them as errors: read the text.
-    const QList<serialport::Bds5ErrorLine> history = ErrorStreamScanner::parseHistory(response.text);
-    m_model->setHistory(history);
-    setStatus(history.isEmpty() ? tr("The drive's error history is empty.")
-                                : tr("ERR HIST: %n error(s), newest first.", nullptr, int(history.size())));
-}
-
-void ErrorLogDock::onBytes(const QByteArray& bytes) {
-    for (const serialport::Bds5ErrorLine& error : m_scanner.feed(bytes))
-        m_model->addReported(error, QDateTime::currentDateTime());
+    m_current->clear();
 }
 
 void ErrorLogDock::activate(const QModelIndex& index) {
     const int line = index.siblingAtColumn(0).data(ErrorLogModel::ProgramLineRole).toInt();
-    if (line > 0) emit goToProgramLine(line);
+    if (line > 0 && !m_current->showLine(model().entry(index.row()))) emit goToProgramLine(line);
 }
 
 bool ErrorLogDock::exportTo(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text) ||
-        file.write(m_model->toCsv().toUtf8()) < 0) {
+        file.write(model().toCsv().toUtf8()) < 0) {
         setStatus(tr("Cannot write %1: %2").arg(path, file.errorString()));
         return false;
     }
-    setStatus(tr("Exported %n error(s) to %1", nullptr, m_model->rowCount()).arg(path));
+    setStatus(tr("Exported %n error(s) to %1", nullptr, model().rowCount()).arg(path));
     return true;
 }
 

@@ -9,8 +9,11 @@ namespace app {
 int ProgramLineJump::show(editor::ProgramEditor& editor, int driveLine) {
     // Downloads strip comments by default (Motion Link's usual choice): count lines the same way.
     const auto text = serialport::Bds5ProgramText::prepare(editor.text(), true);
-    const int line = text.sourceLine(driveLine);
-    if (line <= 0) return 0;
+    return showEditorLine(editor, text.sourceLine(driveLine));
+}
+
+int ProgramLineJump::showEditorLine(editor::ProgramEditor& editor, int line) {
+    if (line <= 0 || line > editor.lines()) return 0;
     QString shown = editor.text(line - 1);
     while (shown.endsWith(QLatin1Char('\n')) || shown.endsWith(QLatin1Char('\r'))) shown.chop(1);
     editor.ensureLineVisible(line - 1);

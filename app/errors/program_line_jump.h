@@ -13,6 +13,8 @@ public:
     // Moves the cursor to the source of drive line driveLine (1-based) and selects that line. Returns the
     // 1-based editor line, or 0 if the program in the editor has no such line.
     static int show(editor::ProgramEditor& editor, int driveLine);
+    // The same for editor line `line` (1-based) itself, for drives whose lines are the source's (SC750).
+    static int showEditorLine(editor::ProgramEditor& editor, int line);
 };
 
 } // namespace app

@@ -6,6 +6,7 @@
 #include "pmc960_status_dock.h"
 
 #include "main_window.h"
+#include "errors/pmc960_error_source.h"
 
 #include <QMenu>
 #include <QProgressDialog>
@@ -19,7 +20,7 @@ constexpr char kEsc = '\x1b';
 Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     : FamilyWorkspace(&window), m_window(window), m_transfer(new Pmc960ProgramTransfer(*this)),
       m_status(new Pmc960StatusDock(&window)), m_parameters(new Pmc960ParameterDock(&window)),
-      m_menu(new QMenu(tr("&MPL"), &window)) {
+      m_menu(new QMenu(tr("&MPL"), &window)), m_errors(new Pmc960ErrorSource(*this)) {
     m_menu->setObjectName(QStringLiteral("mplMenu"));
     QAction* download = m_menu->addAction(tr("&Download Program"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
                                           [this] { m_transfer->download(m_window.editor()); });
@@ -141,6 +142,10 @@ void Pmc960Workspace::deactivate() {
     m_link.reset();
     updateActions();
     if (was) emit statusChanged();
+}
+
+ErrorSource* Pmc960Workspace::errorSource() const {
+    return m_errors;
 }
 
 bool Pmc960Workspace::isConnected() const {

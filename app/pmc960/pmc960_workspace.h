@@ -15,6 +15,7 @@ class QAction;
 namespace app {
 
 class MainWindow;
+class Pmc960ErrorSource;
 class Pmc960ParameterDock;
 class Pmc960ProgramTransfer;
 class Pmc960StatusDock;
@@ -32,6 +33,7 @@ public:
     void deactivate() override;
     bool isConnected() const override;
     QString statusText() const override;
+    ErrorSource* errorSource() const override;
     // MPL is typed at the controller's } prompt: the Terminal talks to it (Esc = Stop).
     bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 
@@ -67,6 +69,7 @@ private:
     Pmc960StatusDock* m_status;
     Pmc960ParameterDock* m_parameters;
     QMenu* m_menu;
+    Pmc960ErrorSource* m_errors;
     QString m_linkText;
     bool m_connected = false;
 };

@@ -34,6 +34,10 @@ int markerCount(const editor::ProgramEditor& editor, int marker) {
 
 Sc750Debugger::Sc750Debugger(Sc750Workspace& workspace) : QObject(&workspace), m_workspace(workspace) {}
 
+editor::ProgramEditor* Sc750Debugger::programEditor() const {
+    return m_program;
+}
+
 QString Sc750Debugger::stateText() const {
     switch (m_state) {
     case State::NoProgram: return tr("No program");
@@ -74,6 +78,8 @@ bool Sc750Debugger::compile() {
                          .arg(m_compiled.error->line)
                          .arg(m_compiled.error->column)
                          .arg(QString::fromStdString(m_compiled.error->message)));
+        emit compileFailed(m_compiled.error->line, m_compiled.error->column,
+                           QString::fromStdString(m_compiled.error->message));
         return false;
     }
     m_lastError.clear();

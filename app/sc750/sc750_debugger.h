@@ -61,6 +61,8 @@ public:
     // The last compile's error text ("LINE 3 COL 7 NEAR 'x': ..."), empty when it compiled.
     QString lastError() const { return m_lastError; }
     const drive_core::sc750::CompileResult& lastCompile() const { return m_compiled; }
+    // The editor whose program was last run on the drive (its lines are the drive's), or nullptr.
+    editor::ProgramEditor* programEditor() const;
 
     // The drive's own state from a status answer ("R,12,0,1,1"): on connecting, a program may be running
     // already (AUTOSTART, L2814-L2829) and only Stop regains control.
@@ -74,6 +76,8 @@ signals:
     void stateChanged();
     void message(const QString& text);
     void runStarted(); // the program was downloaded and R answered: the output window opens
+    // Compile Program found an error (1-based line and column), for the error log.
+    void compileFailed(int line, int column, const QString& message);
 
 private:
     void setState(State state);

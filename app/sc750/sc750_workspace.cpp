@@ -1,6 +1,8 @@
 // Sc750Workspace: link and session lifetime, the Motion Dialogue menus, editor hooks and the status line.
 #include "sc750_workspace.h"
 
+#include "errors/sc750_error_source.h"
+
 #include "sc750_controller_menu.h"
 #include "sc750_debugger.h"
 #include "sc750_function_dialog.h"
@@ -28,6 +30,7 @@ Sc750Workspace::Sc750Workspace(MainWindow& window)
     : FamilyWorkspace(&window), m_window(window), m_debugger(new Sc750Debugger(*this)),
       m_output(new Sc750OutputDock(&window)), m_variables(new Sc750VariablesDock(*this, &window)) {
     createMenus();
+    m_errors = new Sc750ErrorSource(*this);
     m_cursorLabel = new QLabel(&window);
     m_cursorLabel->setObjectName(QStringLiteral("sc750CursorLabel"));
     m_cursorLabel->setToolTip(tr("Motion Dialogue's status line: the axis and the cursor's line and column"));
@@ -207,6 +210,10 @@ void Sc750Workspace::setAxis(int axis) {
     if (m_connected && m_axis != 255) m_session->logOn(m_axis);
     showCursorStatus();
     emit statusChanged();
+}
+
+ErrorSource* Sc750Workspace::errorSource() const {
+    return m_errors;
 }
 
 bool Sc750Workspace::isConnected() const {

@@ -26,6 +26,7 @@ namespace app {
 
 class MainWindow;
 class Sc750Debugger;
+class Sc750ErrorSource;
 class Sc750OutputDock;
 class Sc750VariablesDock;
 
@@ -42,6 +43,7 @@ public:
     void deactivate() override;
     bool isConnected() const override;
     QString statusText() const override;
+    ErrorSource* errorSource() const override;
 
     // The session while the link is open, else nullptr.
     serialport::Sc750Session* session() const { return m_connected ? m_session.get() : nullptr; }
@@ -79,6 +81,7 @@ private:
     Sc750Debugger* m_debugger;
     Sc750OutputDock* m_output;
     Sc750VariablesDock* m_variables;
+    Sc750ErrorSource* m_errors = nullptr;
     QMenu* m_compileMenu = nullptr;
     QMenu* m_optionsMenu = nullptr;
     QLabel* m_cursorLabel = nullptr; // "Axis 255  Line 0001 Col 01"

@@ -32,7 +32,7 @@ bool ready(const MainWindow& window) {
 QStringList codes(const ErrorLogModel& model, ErrorLogModel::Origin origin) {
     QStringList list;
     for (int row = 0; row < model.rowCount(); ++row)
-        if (model.entry(row).origin == origin) list << QString::number(model.entry(row).error.code);
+        if (model.entry(row).origin == origin) list << QString::number(model.entry(row).code);
     return list;
 }
 } // namespace

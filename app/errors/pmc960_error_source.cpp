@@ -1,0 +1,99 @@
+// Pmc960ErrorSource: #xx answers, asynchronous E-codes and the `&` error snapshot as error log rows.
+#include "pmc960_error_source.h"
+
+#include "pmc960_error_text.h"
+
+#include "pmc960/pmc960_workspace.h"
+
+namespace app {
+
+namespace {
+// The error-status buffer's displays, the error code first (L839).
+const char* const kSnapshot[] = {"SE&", "G&", "V&", "SM&", "SB&"};
+constexpr int kMaxDetail = 40; // a download's chunk is more than a command: keep its start
+} // namespace
+
+Pmc960ErrorSource::Pmc960ErrorSource(Pmc960Workspace& workspace)
+    : ErrorSource(drive_core::DriveFamily::Pmc960, &workspace), m_workspace(workspace) {
+    connect(&workspace, &FamilyWorkspace::statusChanged, this, &Pmc960ErrorSource::follow);
+}
+
+QString Pmc960ErrorSource::readText() const {
+    return tr("Read Last Error");
+}
+
+QString Pmc960ErrorSource::readToolTip() const {
+    return tr("SE& and the error-status buffer: the controller's last error, with the position, speed, mode and "
+              "label at the time");
+}
+
+QString Pmc960ErrorSource::clearToolTip() const {
+    return tr("Empties this log (the PMC-960 keeps only its last error, which the next one replaces)");
+}
+
+void Pmc960ErrorSource::follow() {
+    serialport::Pmc960Session* session = m_workspace.session();
+    if (session == m_session) return;
+    m_session = session;
+    m_asked.clear();
+    if (!session) return;
+    connect(session, &serialport::Pmc960Session::finished, this, &Pmc960ErrorSource::onFinished);
+    connect(session, &serialport::Pmc960Session::failed, this,
+            [this](quint64 id, const QString&) { onSnapshotPart(id, {}); });
+    // A #xx at the prompt: an E-code (ESTOP' in motion, FAULT', ...) or the answer to a typed command.
+    connect(session, &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
+        model().addReported(Pmc960ErrorText::entry(code), QDateTime::currentDateTime());
+    });
+}
+
+void Pmc960ErrorSource::onFinished(quint64 id, const serialport::Pmc960Response& response) {
+    if (m_asked.contains(id)) return onSnapshotPart(id, response.error ? QString() : response.value);
+    if (response.error == 0) return;
+    QString command = QString::fromLatin1(response.command).simplified();
+    if (command.size() > kMaxDetail) command = command.left(kMaxDetail) + QStringLiteral("...");
+    model().addReported(Pmc960ErrorText::entry(response.error, command), QDateTime::currentDateTime());
+}
+
+void Pmc960ErrorSource::read() {
+    if (!m_session) return setStatus(tr("Not connected: the last error was not read."));
+    if (!m_asked.isEmpty()) return; // one read at a time
+    m_snapshot.clear();
+    for (const char* command : kSnapshot) m_asked.insert(m_session->send(command), QString::fromLatin1(command));
+    setStatus(tr("Reading the last error (SE&)..."));
+}
+
+void Pmc960ErrorSource::onSnapshotPart(quint64 id, const QString& value) {
+    const QString command = m_asked.take(id);
+    if (command.isEmpty()) return;
+    m_snapshot.insert(command, value);
+    if (m_asked.isEmpty()) showSnapshot();
+}
+
+void Pmc960ErrorSource::showSnapshot() {
+    bool ok = false;
+    const int code = m_snapshot.value(QStringLiteral("SE&")).toInt(&ok, 16);
+    if (!ok) return setStatus(tr("The controller did not give its last error."));
+    if (code == 0) {
+        model().setHistory({});
+        return setStatus(tr("SE& = 00: no error since power-up."));
+    }
+    ErrorLogModel::Entry row = Pmc960ErrorText::entry(code);
+    // SB& is "<label> <count>": the last @ label passed and the commands executed since (L1466-L1474).
+    const QStringList label = m_snapshot.value(QStringLiteral("SB&")).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    QStringList at;
+    if (const QString g = m_snapshot.value(QStringLiteral("G&")); !g.isEmpty()) at << tr("position %1").arg(g);
+    if (const QString v = m_snapshot.value(QStringLiteral("V&")); !v.isEmpty()) at << tr("speed %1").arg(v);
+    if (const QString m = m_snapshot.value(QStringLiteral("SM&")); !m.isEmpty()) at << tr("mode %1").arg(m);
+    if (label.size() == 2) at << tr("label %1 + %2").arg(label[0], label[1]);
+    row.detail = at.join(QStringLiteral(", "));
+    row.where = tr("last error (&)");
+    model().setHistory({row});
+    setStatus(tr("Last error %1: %2.").arg(row.codeText, row.message));
+}
+
+void Pmc960ErrorSource::clear() {
+    model().clear();
+    setStatus(tr("The log is empty."));
+}
+
+} // namespace app
