@@ -80,7 +80,7 @@ void ErrorLogDock::showSource(ErrorSource* source) {
     m_view->setModel(&source->model());
     m_view->setColumnWidth(ErrorLogModel::Severity, 100);
     m_view->setColumnWidth(ErrorLogModel::Code, 50);
-    m_view->setColumnWidth(ErrorLogModel::Message, 260);
+    m_view->setColumnWidth(ErrorLogModel::Message, 340); // room for a PMC-960 snapshot or an SC750 message
     m_view->setColumnWidth(ErrorLogModel::Line, 50);
     m_view->setColumnWidth(ErrorLogModel::Source, 90);
     m_read->setText(source->readText());

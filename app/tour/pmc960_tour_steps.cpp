@@ -1,19 +1,24 @@
-// PMC-960 tour steps: connect, download a demo program, move, grab the editor and the two docks.
+// PMC-960 tour steps: connect, download a demo program, move, grab the editor, the two docks and the error log.
 #include "pmc960_tour_steps.h"
 
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "main_window.h"
 
+#include "drive_core/simulator_controls.h"
 #include "editor/help_popup.h"
+#include "errors/error_log_dock.h"
+#include "errors/error_log_model.h"
 #include "editor/program_editor.h"
 #include "pmc960/mpl_language.h"
 #include "pmc960/pmc960_parameter_dock.h"
 #include "pmc960/pmc960_program_transfer.h"
 #include "pmc960/pmc960_status_dock.h"
 #include "pmc960/pmc960_workspace.h"
+#include "serialport/simulator_link.h"
 
 #include <QPointer>
+#include <QTimer>
 
 #include <memory>
 
@@ -38,6 +43,12 @@ E
 
 Pmc960Workspace* pmc960(MainWindow& window) {
     return static_cast<Pmc960Workspace*>(window.workspace(drive_core::DriveFamily::Pmc960));
+}
+
+// ESTOP' on the simulator's bench (MOTION input off = ESTOP' asserted).
+void estop(MainWindow& window, bool asserted) {
+    if (auto* simulator = qobject_cast<serialport::SimulatorLink*>(pmc960(window)->link()))
+        simulator->control([asserted](drive_core::SimulatorControls& bench) { bench.setMotionInput(!asserted); });
 }
 } // namespace
 
@@ -108,9 +119,38 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          return table->pendingReads() == 0 && table->stored(QStringLiteral("TGP")) == QLatin1String("24");
                      },
                      .grab = [&window] { return pmc960(window)->parameterDock()->grab(); },
+                     .cleanUp = [&window] { pmc960(window)->parameterDock()->setFloating(false); }});
+    // The error log decoding the controller's codes: a move refused while idle (#B6), ESTOP' asserted on the
+    // bench during a move (the asynchronous #E0), and the `&` snapshot of that last error.
+    steps.push_back({.name = QStringLiteral("error-log-pmc960"),
+                     .act = [&window] {
+                         ErrorLogDock* errors = window.errorLogDock();
+                         errors->show();
+                         errors->setFloating(true);
+                         errors->resize(1100, 300);
+                         errors->raise();
+                         Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         for (const char* command : {"SM0", "I4000+", "SM2", "V400", "I400000+"})
+                             status->sendCommand(QString::fromLatin1(command));
+                         QTimer::singleShot(1500, errors, [&window] { estop(window, true); });
+                         QTimer::singleShot(2500, errors, [&window, errors] {
+                             estop(window, false);
+                             errors->readHistory();
+                         });
+                     },
+                     .ready = [&window] {
+                         const ErrorLogModel& m = window.errorLogDock()->model();
+                         int reported = 0, history = 0;
+                         for (int row = 0; row < m.rowCount(); ++row) {
+                             const bool shown = m.entry(row).code == 0xB6 || m.entry(row).code == 0xE0;
+                             (m.entry(row).origin == ErrorLogModel::Origin::History ? history : reported) += shown;
+                         }
+                         return reported >= 2 && history >= 1;
+                     },
+                     .grab = [&window] { return window.errorLogDock()->grab(); },
                      .cleanUp = [&window, demo] {
-                         Pmc960Workspace* ws = pmc960(window);
-                         ws->parameterDock()->setFloating(false);
+                         window.errorLogDock()->setFloating(false);
+                         window.errorLogDock()->hide();
                          if (*demo) (*demo)->setModified(false);
                          window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
                      }});
