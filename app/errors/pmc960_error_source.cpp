@@ -5,12 +5,15 @@
 
 #include "pmc960/pmc960_workspace.h"
 
+#include <utility>
+
 namespace app {
 
 namespace {
 // The error-status buffer's displays, the error code first (L839).
 const char* const kSnapshot[] = {"SE&", "G&", "V&", "SM&", "SB&"};
 constexpr int kMaxDetail = 40; // a download's chunk is more than a command: keep its start
+constexpr int kMaxShown = 256;
 } // namespace
 
 Pmc960ErrorSource::Pmc960ErrorSource(Pmc960Workspace& workspace)
@@ -41,8 +44,13 @@ void Pmc960ErrorSource::follow() {
     connect(session, &serialport::Pmc960Session::failed, this,
             [this](quint64 id, const QString&) { onSnapshotPart(id, {}); });
     // A #xx at the prompt: an E-code (ESTOP' in motion, FAULT', ...) or the answer to a typed command.
+    // The session shows the bytes before it decodes their #xx, so the echoed command is here by then.
+    connect(session, &serialport::Pmc960Session::shownReceived, this, [this](const QByteArray& bytes) {
+        m_shown.append(bytes);
+        if (m_shown.size() > kMaxShown) m_shown.remove(0, m_shown.size() - kMaxShown);
+    });
     connect(session, &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
-        model().addReported(Pmc960ErrorText::entry(code), QDateTime::currentDateTime());
+        model().addReported(Pmc960ErrorText::entry(code, typedCommand()), QDateTime::currentDateTime());
     });
 }
 
@@ -52,6 +60,17 @@ void Pmc960ErrorSource::onFinished(quint64 id, const serialport::Pmc960Response&
     QString command = QString::fromLatin1(response.command).simplified();
     if (command.size() > kMaxDetail) command = command.left(kMaxDetail) + QStringLiteral("...");
     model().addReported(Pmc960ErrorText::entry(response.error, command), QDateTime::currentDateTime());
+}
+
+QString Pmc960ErrorSource::typedCommand() {
+    // "<echo of the typed line> #B6 <cr><lf><id> }": the echo stands between the previous prompt and the
+    // code. An E-code at an idle prompt has none (or names the command it interrupted, which is right too).
+    const QByteArray shown = std::exchange(m_shown, {});
+    const qsizetype hash = shown.lastIndexOf('#');
+    if (hash < 0) return {};
+    const QByteArray line = shown.left(hash);
+    const QString command = QString::fromLatin1(line.mid(line.lastIndexOf('}') + 1)).simplified();
+    return command.size() > kMaxDetail ? command.left(kMaxDetail) + QStringLiteral("...") : command;
 }
 
 void Pmc960ErrorSource::read() {

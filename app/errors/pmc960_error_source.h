@@ -35,11 +35,14 @@ private:
     void onFinished(quint64 id, const serialport::Pmc960Response& response);
     void onSnapshotPart(quint64 id, const QString& value);
     void showSnapshot();
+    // The command typed at the prompt that the #xx answered, from what the terminal shows ("I4000+").
+    QString typedCommand();
 
     Pmc960Workspace& m_workspace;
     QPointer<serialport::Pmc960Session> m_session;
     QHash<quint64, QString> m_asked;    // snapshot request id -> its command ("SE&")
     QHash<QString, QString> m_snapshot; // command -> the controller's answer
+    QByteArray m_shown;                 // the terminal's bytes since the last prompt, up to kMaxShown
 };
 
 } // namespace app

@@ -184,7 +184,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(rowOf(dock.model(), QStringLiteral("#B6")) >= 0, kTimeoutMs);
         int row = rowOf(dock.model(), QStringLiteral("#B6"));
         QCOMPARE(cell(dock.model(), row, ErrorLogModel::Severity), QStringLiteral("Refused"));
-        QCOMPARE(cell(dock.model(), row, ErrorLogModel::Message), QStringLiteral("Servodrive not enabled"));
+        QCOMPARE(cell(dock.model(), row, ErrorLogModel::Message), QStringLiteral("Servodrive not enabled 'I4000+'"));
         QVERIFY2(cell(dock.model(), row, ErrorLogModel::Hint).contains(QStringLiteral("SM1 or SM2")),
                  qPrintable(cell(dock.model(), row, ErrorLogModel::Hint)));
         QVERIFY(dock.model()
@@ -225,7 +225,7 @@ private slots:
         QFile file(csv);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(file.readAll());
-        QVERIFY2(text.contains(QStringLiteral("Refused,#B6,Servodrive not enabled,,")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Refused,#B6,Servodrive not enabled,,I4000+,")), qPrintable(text));
         dock.clearHistory();
         QCOMPARE(dock.model().rowCount(), 0);
     }
