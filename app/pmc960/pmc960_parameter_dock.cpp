@@ -9,6 +9,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -30,10 +31,17 @@ bool isReadOnly(const Pmc960Parameter& p) {
 }
 } // namespace
 
-Pmc960ParameterDock::Pmc960ParameterDock(QWidget* parent) : QDockWidget(tr("PMC-960 Parameters"), parent) {
+// The PMC-960's variable browser is its parameter table: the dock carries the family's "Variables" title.
+Pmc960ParameterDock::Pmc960ParameterDock(QWidget* parent)
+    : QDockWidget(tr("Variables \u2014 PMC-960 Parameter Table"), parent) {
     setObjectName(QStringLiteral("pmc960ParameterDock"));
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
+    m_filter = new QLineEdit(body);
+    m_filter->setPlaceholderText(tr("Search parameters by name or description"));
+    m_filter->setClearButtonEnabled(true);
+    layout->addWidget(m_filter);
+    connect(m_filter, &QLineEdit::textChanged, this, &Pmc960ParameterDock::setFilter);
     m_table = new QTableWidget(int(parameters().size()), ColumnCount, body);
     m_table->setObjectName(QStringLiteral("pmc960ParameterTable"));
     m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("Stored (?)"), tr("In use (!)"), tr("Range"), tr("Description")});
@@ -180,6 +188,22 @@ bool Pmc960ParameterDock::setStoredValue(const QString& name, const QString& tex
     if (write.needsWriteEnable) m_session->send("SW0\r");
     showMessage(tr("Writing %1 = %2\u2026").arg(name, text.trimmed()), false);
     return true;
+}
+
+void Pmc960ParameterDock::setFilter(const QString& text) {
+    if (m_filter->text() != text) m_filter->setText(text); // comes back here through textChanged
+    const QString wanted = text.trimmed();
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const bool match = wanted.isEmpty() || m_table->item(row, NameColumn)->text().contains(wanted, Qt::CaseInsensitive) ||
+                           m_table->item(row, DescriptionColumn)->text().contains(wanted, Qt::CaseInsensitive);
+        m_table->setRowHidden(row, !match);
+    }
+}
+
+int Pmc960ParameterDock::visibleRows() const {
+    int shown = 0;
+    for (int row = 0; row < m_table->rowCount(); ++row) shown += !m_table->isRowHidden(row);
+    return shown;
 }
 
 int Pmc960ParameterDock::rowOf(const QString& name) const {

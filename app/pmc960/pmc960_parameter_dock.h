@@ -1,4 +1,4 @@
-// Pmc960ParameterDock: the PMC-960's parameter table — every parameter of the catalog (motion buffer,
+// Pmc960ParameterDock: the PMC-960's variable browser, its parameter table — every parameter of the catalog (motion buffer,
 // system registers, the non-volatile T table) with its stored (?) and in-use (!) value read through the
 // session, its range and description. The stored value is editable: checked against the catalog's limits
 // first, then written (with SW1/SW0 around T-table writes) and read back; a refusal shows the controller's
@@ -10,6 +10,7 @@
 #include <QHash>
 
 class QLabel;
+class QLineEdit;
 class QPushButton;
 class QTableWidget;
 class QTableWidgetItem;
@@ -37,6 +38,9 @@ public:
     bool setStoredValue(const QString& name, const QString& text);
 
     QTableWidget* table() const { return m_table; }
+    // Shows only the rows whose name or description contains text (the search field's text).
+    void setFilter(const QString& text);
+    int visibleRows() const;
     int rowOf(const QString& name) const;
     QString stored(const QString& name) const;
     QString inUse(const QString& name) const;
@@ -69,6 +73,7 @@ private:
 
     serialport::Pmc960Session* m_session = nullptr;
     QTableWidget* m_table;
+    QLineEdit* m_filter;
     QPushButton* m_refresh;
     QLabel* m_message;
     QHash<quint64, Read> m_reads;

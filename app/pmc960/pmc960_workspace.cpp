@@ -4,9 +4,11 @@
 #include "pmc960_parameter_dock.h"
 #include "pmc960_program_transfer.h"
 #include "pmc960_status_dock.h"
+#include "pmc960_watch_source.h"
 
 #include "main_window.h"
 #include "errors/pmc960_error_source.h"
+#include "scope/watch_view.h"
 
 #include <QMenu>
 #include <QProgressDialog>
@@ -35,6 +37,8 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     m_menu->addSeparator();
     m_menu->addAction(m_status->toggleViewAction());
     m_menu->addAction(m_parameters->toggleViewAction());
+    m_menu->addAction(tr("&Watch Variables..."), this, &Pmc960Workspace::watchVariables)
+        ->setStatusTip(tr("A rolling chart of position, following error, velocity and distance to go"));
 
     connect(m_transfer, &Pmc960ProgramTransfer::busyChanged, this, [this](bool busy) {
         m_status->setPaused(busy);
@@ -52,6 +56,13 @@ Pmc960Workspace::~Pmc960Workspace() {
     if (m_session) m_session->disconnect(this);
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
+}
+
+WatchView* Pmc960Workspace::watchVariables() {
+    if (!m_watch) m_watch = new WatchView(new Pmc960WatchSource(*this), &m_window);
+    m_watch->show();
+    m_watch->raise();
+    return m_watch;
 }
 
 QList<QMenu*> Pmc960Workspace::menus() const {

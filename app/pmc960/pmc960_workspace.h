@@ -8,6 +8,8 @@
 
 #include "serialport/pmc960_session.h"
 
+#include <QPointer>
+
 #include <memory>
 
 class QAction;
@@ -19,6 +21,7 @@ class Pmc960ErrorSource;
 class Pmc960ParameterDock;
 class Pmc960ProgramTransfer;
 class Pmc960StatusDock;
+class WatchView;
 
 class Pmc960Workspace final : public FamilyWorkspace {
     Q_OBJECT
@@ -52,6 +55,8 @@ public:
     // Stop: ESC to the controller at once (ahead of anything queued), which aborts a running program, a
     // wait or a half-typed command (digest §4.6); queued commands are dropped.
     void stop();
+    // Watch Variables: the scope's polled rolling chart of this family's values (one window, reused).
+    WatchView* watchVariables();
 
 signals:
     // A transfer started or ended: docks leave the line alone while the program buffer is written.
@@ -70,6 +75,7 @@ private:
     Pmc960ParameterDock* m_parameters;
     QMenu* m_menu;
     Pmc960ErrorSource* m_errors;
+    QPointer<WatchView> m_watch;
     QString m_linkText;
     bool m_connected = false;
 };

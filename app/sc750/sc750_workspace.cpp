@@ -8,12 +8,14 @@
 #include "sc750_function_dialog.h"
 #include "sc750_output_dock.h"
 #include "sc750_variables_dock.h"
+#include "sc750_watch_source.h"
 #include "servobasic_language.h"
 
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "file_types.h"
 #include "main_window.h"
+#include "scope/watch_view.h"
 #include "terminal_dock.h"
 
 #include "editor/program_editor.h"
@@ -118,7 +120,16 @@ void Sc750Workspace::createMenus() {
         m_variables->focusName();
     });
     menu->addAction(tr("Real &Time Function Call..."), this, &Sc750Workspace::showFunctionCall);
+    menu->addAction(tr("&Watch Variables..."), this, &Sc750Workspace::watchVariables)
+        ->setStatusTip(tr("A rolling chart of POSITION, VELOCITY, POS.ERROR... read while the program runs"));
     m_optionsMenu = new Sc750ControllerMenu(*this, &m_window);
+}
+
+WatchView* Sc750Workspace::watchVariables() {
+    if (!m_watch) m_watch = new WatchView(new Sc750WatchSource(*this), &m_window);
+    m_watch->show();
+    m_watch->raise();
+    return m_watch;
 }
 
 QAction* Sc750Workspace::action(const QString& text) const {

@@ -29,6 +29,7 @@ class Sc750Debugger;
 class Sc750ErrorSource;
 class Sc750OutputDock;
 class Sc750VariablesDock;
+class WatchView;
 
 class Sc750Workspace final : public FamilyWorkspace {
     Q_OBJECT
@@ -64,6 +65,8 @@ public:
 
     // Opens the Real Time Function Call dialog (non-modal) and returns it (the tour grabs it).
     QWidget* showFunctionCall();
+    // Watch Variables: the scope's polled rolling chart of this family's values (one window, reused).
+    WatchView* watchVariables();
 
 private:
     void createMenus();
@@ -87,6 +90,7 @@ private:
     QLabel* m_cursorLabel = nullptr; // "Axis 255  Line 0001 Col 01"
     QPointer<editor::ProgramEditor> m_editor;
     QHash<quint64, std::pair<Done, Failed>> m_waiting;
+    QPointer<WatchView> m_watch;
     QString m_linkText;
     int m_axis = 255;
     bool m_connected = false;

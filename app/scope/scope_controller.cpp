@@ -12,6 +12,7 @@
 #include "transfer_dialog.h"
 #include "transfer_reporter.h"
 #include "tuning_panel.h"
+#include "bds5_watch_source.h"
 #include "watch_view.h"
 
 #include "scope/capture_csv.h"
@@ -99,7 +100,7 @@ BodeView* ScopeController::frequencyResponse() {
 }
 
 WatchView* ScopeController::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(m_window.connection(), &m_window);
+    if (!m_watch) m_watch = new WatchView(new Bds5WatchSource(m_window.connection()), &m_window);
     m_watch->show();
     m_watch->raise();
     return m_watch;

@@ -1,8 +1,8 @@
-// VariableWatcher: the polled rolling chart's data — "P VAR1 VAR2" through the session at the link's pace
-// (the next poll goes out when the previous answer came back, so the queue never holds more than one),
-// each answer appended to a rolling window of a SeriesStore with its measured sample rate. Works for any
-// variable P prints, including those RECORD cannot take. Pauses while the drive is not at an interactive
-// prompt (a program running, a transfer, disconnected). GUI thread only.
+// VariableWatcher: the polled rolling chart's data — one sample at a time from the family's WatchSource
+// (the next poll goes out when the previous answer came back, so the link never holds more than one),
+// each answer appended to a rolling window of a SeriesStore with its measured sample rate. Pauses while
+// the source says no poll may go out (a program running on the BDS5, a transfer, disconnected) and looks
+// again every 250 ms. GUI thread only.
 #pragma once
 
 #include "scope/series_store.h"
@@ -12,32 +12,29 @@
 #include <QStringList>
 #include <QTimer>
 
-namespace serialport {
-struct Bds5Response;
-}
-
 namespace app {
 
-class DriveConnection;
+class WatchSource;
 
 class VariableWatcher final : public QObject {
     Q_OBJECT
 public:
     static constexpr double kWindow_s = 30; // the chart shows the last 30 s
 
-    explicit VariableWatcher(DriveConnection& connection, QObject* parent = nullptr);
+    explicit VariableWatcher(WatchSource& source, QObject* parent = nullptr);
 
-    // 1 to 4 names; takes effect at the next start().
+    WatchSource& source() const { return m_source; }
+    // 1 to 4 names of the source's choices; takes effect at the next start().
     void setVariables(const QStringList& names) { m_variables = names; }
     const QStringList& variables() const { return m_variables; }
     void start(); // clears the store
     void stop();  // no poll goes out after this (one already on the wire is answered and ignored)
     bool isRunning() const { return m_running; }
-    bool isPaused() const { return m_paused; }
+    bool isPaused() const { return !m_pauseReason.isEmpty(); }
 
-    // Times are seconds since start(), taken halfway between sending P and its answer.
+    // Times are seconds since start(), taken halfway between the poll and its answer.
     const scope::SeriesStore& store() const { return m_store; }
-    // Polls per second over the last few answers; 0 until there are two.
+    // Samples per second over the last few answers; 0 until there are two.
     double rate_hz() const { return m_rate_hz; }
     QString rateText() const; // "polled, 7.8 samples/s"
 
@@ -48,20 +45,20 @@ signals:
 
 private:
     void poll();
-    void onAnswer(quint64 id, const serialport::Bds5Response& response);
-    void onFailed(quint64 id, const QString& reason);
-    void setPaused(bool paused);
+    void onAnswered(const QList<double>& values);
+    void onFailed(const QString& reason, bool stopWatching);
+    void setPauseReason(const QString& reason);
 
-    DriveConnection& m_connection;
+    WatchSource& m_source;
     QStringList m_variables;
     scope::SeriesStore m_store;
     QElapsedTimer m_clock;
-    QTimer m_retry; // while paused: look again for an interactive prompt
-    quint64 m_pollId = 0;
+    QTimer m_retry; // while paused or after a failed poll: look again
+    QString m_pauseReason;
     double m_sentAt_s = 0;
     double m_rate_hz = 0;
+    bool m_polling = false; // a poll is in flight
     bool m_running = false;
-    bool m_paused = false;
 };
 
 } // namespace app

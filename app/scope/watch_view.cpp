@@ -1,8 +1,8 @@
 // WatchView: chooser, buttons and the incremental rolling chart.
 #include "watch_view.h"
 
-#include "scope_catalog.h"
 #include "variable_watcher.h"
+#include "watch_source.h"
 
 #include <qcustomplot.h>
 
@@ -20,19 +20,21 @@ const QColor kColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), Q
                            QColor(0x94, 0x67, 0xbd)};
 } // namespace
 
-WatchView::WatchView(DriveConnection& connection, QWidget* parent)
-    : QDialog(parent), m_watcher(new VariableWatcher(connection, this)), m_chooser(new QListWidget(this)),
+WatchView::WatchView(WatchSource* source, QWidget* parent)
+    : QDialog(parent), m_watcher(new VariableWatcher(*source, this)), m_chooser(new QListWidget(this)),
       m_start(new QPushButton(tr("&Start"), this)), m_stop(new QPushButton(tr("S&top"), this)),
       m_rate(new QLabel(this)), m_plot(new QCustomPlot(this)) {
     setObjectName(QStringLiteral("watchView"));
-    setWindowTitle(tr("Watch Variables"));
-    for (const QString& name : pollableVariables()) {
-        auto* item = new QListWidgetItem(name, m_chooser);
+    source->setParent(this);
+    setWindowTitle(tr("Watch Variables \u2014 %1").arg(source->familyName()));
+    for (const WatchSource::Choice& choice : source->choices()) {
+        auto* item = new QListWidgetItem(choice.label, m_chooser);
+        item->setData(Qt::UserRole, choice.name);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Unchecked);
     }
-    m_chooser->setMaximumWidth(140);
-    m_chooser->setToolTip(tr("Tick up to %1 variables; P polls them as fast as the link answers.").arg(kMaxVariables));
+    m_chooser->setMaximumWidth(source->familyName() == QLatin1String("BDS5") ? 140 : 190);
+    m_chooser->setToolTip(tr("Tick up to %1 variables. %2").arg(kMaxVariables).arg(source->method()));
     m_plot->setMinimumSize(480, 300);
     m_plot->xAxis->setLabel(tr("time [s]"));
     m_plot->axisRect()->setupFullAxesBox(false);
@@ -67,7 +69,9 @@ QString WatchView::rateLabel() const {
 void WatchView::watch(const QStringList& names) {
     for (int i = 0; i < m_chooser->count(); ++i) {
         QListWidgetItem* item = m_chooser->item(i);
-        item->setCheckState(names.contains(item->text(), Qt::CaseInsensitive) ? Qt::Checked : Qt::Unchecked);
+        const bool wanted = names.contains(item->data(Qt::UserRole).toString(), Qt::CaseInsensitive) ||
+                            names.contains(item->text(), Qt::CaseInsensitive);
+        item->setCheckState(wanted ? Qt::Checked : Qt::Unchecked);
     }
     start();
 }
@@ -75,9 +79,9 @@ void WatchView::watch(const QStringList& names) {
 void WatchView::start() {
     QStringList names;
     for (int i = 0; i < m_chooser->count(); ++i)
-        if (m_chooser->item(i)->checkState() == Qt::Checked) names << m_chooser->item(i)->text();
+        if (m_chooser->item(i)->checkState() == Qt::Checked) names << m_chooser->item(i)->data(Qt::UserRole).toString();
     if (names.size() > kMaxVariables) {
-        m_rate->setText(tr("At most %1 variables: the more P asks for, the slower each sample.").arg(kMaxVariables));
+        m_rate->setText(tr("At most %1 variables: the more a poll asks for, the slower each sample.").arg(kMaxVariables));
         return;
     }
     m_watcher->setVariables(names);
@@ -87,8 +91,10 @@ void WatchView::start() {
         // The first variable on the left axis, the second on the right, the others share the left one.
         QCPAxis* y = i == 1 ? m_plot->yAxis2 : m_plot->yAxis;
         QCPGraph* graph = m_plot->addGraph(m_plot->xAxis, y);
-        const std::string unit = unitOf(names[i].toUpper().toStdString());
-        graph->setName(unit.empty() ? names[i] : QStringLiteral("%1 [%2]").arg(names[i], QString::fromStdString(unit)));
+        const auto choice = m_watcher->source().choice(names[i]);
+        const QString label = choice ? choice->label : names[i];
+        const QString unit = choice ? choice->unit : QString();
+        graph->setName(unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, unit));
         graph->setPen(QPen(kColours[i % kMaxVariables], 1.6));
         graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 4));
         y->setLabel(graph->name());

@@ -1,5 +1,6 @@
-// WatchView: Scope > Watch Variables — a variable chooser, Start/Stop, and the polled rolling chart of the
-// last 30 s labelled with its measured sample rate. The polling is VariableWatcher's. GUI thread only.
+// WatchView: Scope > Watch Variables — a chooser of the family's values, Start/Stop, and the polled rolling
+// chart of the last 30 s labelled with its measured sample rate. The polling is VariableWatcher's, the
+// reading the family's WatchSource (which the view owns). One per family. GUI thread only.
 #pragma once
 
 #include <QDialog>
@@ -11,17 +12,19 @@ class QPushButton;
 
 namespace app {
 
-class DriveConnection;
 class VariableWatcher;
+class WatchSource;
 
 class WatchView final : public QDialog {
     Q_OBJECT
 public:
-    WatchView(DriveConnection& connection, QWidget* parent = nullptr);
+    // Takes ownership of source.
+    WatchView(WatchSource* source, QWidget* parent = nullptr);
 
     VariableWatcher& watcher() { return *m_watcher; }
     QCustomPlot* plot() const { return m_plot; }
     QString rateLabel() const;
+    QListWidget* chooser() const { return m_chooser; }
     // Ticks the named variables in the chooser (1 to 4) and starts watching them.
     void watch(const QStringList& names);
     void start(); // the ticked variables

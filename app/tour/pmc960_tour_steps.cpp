@@ -15,6 +15,8 @@
 #include "pmc960/pmc960_program_transfer.h"
 #include "pmc960/pmc960_status_dock.h"
 #include "pmc960/pmc960_workspace.h"
+#include "scope/variable_watcher.h"
+#include "scope/watch_view.h"
 #include "serialport/simulator_link.h"
 
 #include <QPointer>
@@ -120,6 +122,27 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                      },
                      .grab = [&window] { return pmc960(window)->parameterDock()->grab(); },
                      .cleanUp = [&window] { pmc960(window)->parameterDock()->setFloating(false); }});
+    // Watch Variables on the PMC-960: position and following error from status polls during an index.
+    auto watch = std::make_shared<QPointer<WatchView>>();
+    steps.push_back({.name = QStringLiteral("watch-pmc960"),
+                     .act = [&window, watch] {
+                         WatchView* view = *watch = pmc960(window)->watchVariables();
+                         view->resize(900, 440);
+                         view->watch({QStringLiteral("g"), QStringLiteral("f")});
+                         Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         for (const char* command : {"SM2", "V40", "I30000-"})
+                             status->sendCommand(QString::fromLatin1(command));
+                     },
+                     .ready = [watch] {
+                         if (!*watch || (*watch)->watcher().store().channelCount() == 0) return false;
+                         const auto& samples = (*watch)->watcher().store().channel(0).samples;
+                         // the index has run for a while: a ramp with samples on both sides of it
+                         return samples.size() > 30 && samples.front().value - samples.back().value > 20000;
+                     },
+                     .grab = [watch] { return *watch ? (*watch)->grab() : QPixmap(); },
+                     .cleanUp = [watch] {
+                         if (*watch) (*watch)->close();
+                     }});
     // The error log decoding the controller's codes: a move refused while idle (#B6), ESTOP' asserted on the
     // bench during a move (the asynchronous #E0), and the `&` snapshot of that last error.
     steps.push_back({.name = QStringLiteral("error-log-pmc960"),

@@ -12,6 +12,8 @@
 #include "sc750/sc750_output_dock.h"
 #include "sc750/sc750_variables_dock.h"
 #include "sc750/sc750_workspace.h"
+#include "scope/variable_watcher.h"
+#include "scope/watch_view.h"
 
 #include <QDialog>
 #include <QLabel>
@@ -32,10 +34,13 @@ DIM Distance AS FLOAT
 '----- Main Program -----
 Count = 0
 Distance = 2.5            ' revolutions per index
-PAUSE.TIME = 0.05
+PAUSE.TIME = 0.4
 Index_Loop:
     Count = Count + 1
     PRINT "Index"; Count; "of"; Distance; "revs"
+    ENABLE = 1
+    INDEX.DIST = 10240    ' 2.5 revs at 4096 counts/rev
+    GO.INCR
     PAUSE
     GOTO Index_Loop
 END
@@ -79,6 +84,24 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      .act = [&window] { sc750(window)->debugger().run(); },
                      .ready = [&window] {
                          return sc750(window)->outputDock()->text().contains(QStringLiteral("Index 3 "));
+                     }});
+    // Watch Variables on the SC750: POSITION and VELOCITY read with G frames while the demo indexes.
+    auto watch = std::make_shared<QPointer<WatchView>>();
+    steps.push_back({.name = QStringLiteral("watch-sc750"),
+                     .act = [&window, watch] {
+                         WatchView* view = *watch = sc750(window)->watchVariables();
+                         view->resize(900, 440);
+                         view->watch({QStringLiteral("POSITION"), QStringLiteral("VELOCITY")});
+                     },
+                     .ready = [watch] {
+                         if (!*watch || (*watch)->watcher().store().channelCount() < 2) return false;
+                         const auto& samples = (*watch)->watcher().store().channel(0).samples;
+                         // three indexes or more on the chart
+                         return samples.size() > 40 && samples.back().value - samples.front().value > 3 * 10240;
+                     },
+                     .grab = [watch] { return *watch ? (*watch)->grab() : QPixmap(); },
+                     .cleanUp = [watch] {
+                         if (*watch) (*watch)->close();
                      }});
     steps.push_back({.name = QStringLiteral("sc750-break"),
                      .act = [&window, demo] {

@@ -184,6 +184,15 @@ private slots:
         QVERIFY(!written.at(1).at(1).toBool());
         QVERIFY2(table->message().contains(QStringLiteral("#9C")), qPrintable(table->message()));
         QTRY_COMPARE_WITH_TIMEOUT(table->stored(QStringLiteral("TGF")), QStringLiteral("16"), kTimeoutMs);
+
+        // It is the family's variable browser: titled so, and searchable by name or description.
+        QVERIFY(table->windowTitle().startsWith(QStringLiteral("Variables")));
+        table->setFilter(QStringLiteral("gain"));
+        QVERIFY(table->visibleRows() > 0 && table->visibleRows() < table->table()->rowCount());
+        QVERIFY(!table->table()->isRowHidden(table->rowOf(QStringLiteral("TGP")))); // "position loop gain"
+        QVERIFY(table->table()->isRowHidden(table->rowOf(QStringLiteral("SF"))));
+        table->setFilter(QString());
+        QCOMPARE(table->visibleRows(), table->table()->rowCount());
     }
 
     void mplFilesGetMplHighlightingAndHelp() {
