@@ -28,7 +28,8 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         if (m_current) emit failed(m_current->id, QStringLiteral("link closed"));
         m_current.reset();
         m_heldTyped.clear();
-        m_typedLineOpen = false;
+        m_typedPrompts = 0;
+        m_typedPartial = false;
         setState(State::Closed);
     });
     connect(&m_timeout, &QTimer::timeout, this, &Pmc960Session::onTimeout);
@@ -36,6 +37,12 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         if (m_state != State::WaitingForPrompt) return;
         askForPrompt();
         m_wake.start();
+    });
+    m_typedSettle.setSingleShot(true);
+    m_typedSettle.setInterval(kTypedSettleMs);
+    connect(&m_typedSettle, &QTimer::timeout, this, [this] {
+        m_typedPrompts = 0; // the prompt owed is not coming
+        pump();
     });
     m_settle.setSingleShot(true);
     m_settle.setInterval(std::max(20, m_link.quietMs() * 4));
@@ -48,7 +55,7 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         pump();
     });
     connect(&m_statusTimer, &QTimer::timeout, this, [this] {
-        if (m_state != State::Ready || m_current || !m_queue.empty() || m_statusLetters.isEmpty() || m_typedLineOpen)
+        if (m_state != State::Ready || m_current || !m_queue.empty() || m_statusLetters.isEmpty() || typedLineOpen())
             return;
         Request r;
         r.id = m_nextId++;
@@ -101,7 +108,8 @@ void Pmc960Session::resynchronise(const QByteArray& first) {
     m_timeout.stop();
     const auto current = std::exchange(m_current, std::nullopt);
     m_inEditor = false;
-    m_typedLineOpen = false;
+    m_typedPrompts = 0;
+    m_typedPartial = false;
     m_buffer.clear();
     m_resync = first;
     m_silentAsks = 0;
@@ -165,10 +173,11 @@ void Pmc960Session::setState(State state) {
 void Pmc960Session::pump() {
     if (m_current) return;
     if (!m_heldTyped.isEmpty() && (m_state == State::Ready || m_state == State::Busy)) {
-        m_typedLineOpen = true;
-        write(std::exchange(m_heldTyped, {}), true);
+        const QByteArray typed = std::exchange(m_heldTyped, {});
+        noteTyped(typed);
+        write(typed, true);
     }
-    if (m_typedLineOpen || m_queue.empty()) return;
+    if (typedLineOpen() || m_queue.empty()) return;
     // Everything waits for the prompt, except that polls and the editor's text need none (the editor
     // gives no prompt until ESC, and a poll is answered at any time).
     const Kind next = m_queue.front().kind;
@@ -184,6 +193,17 @@ void Pmc960Session::pump() {
     }
     m_timeout.start(m_current->timeoutMs);
     if (m_current->kind == Kind::Expect && m_current->expect.isEmpty()) complete();
+}
+
+// A poll is answered at any time, so a prompt still on its way comes ahead of the answer: the second prompt
+// of a command refused at its sign ("I4000+\r" while moving: #B2 and a prompt, then the CR read as an empty
+// command and prompted again), or a program's prompt as it ends. Such a prompt is the terminal's, not the answer (an answer never begins with CR); one cut short waits
+// for its last bytes.
+void Pmc960Session::dropPromptsBeforePollAnswer() {
+    while (m_buffer.startsWith("\r\n") && m_buffer.size() >= 4 && m_buffer.at(3) == '}') {
+        emit shownReceived(m_buffer.left(4));
+        m_buffer.remove(0, 4);
+    }
 }
 
 bool Pmc960Session::endsInPrompt() const {
@@ -212,8 +232,9 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
             pump();
             return;
         }
+        if (m_current->kind == Kind::Poll) dropPromptsBeforePollAnswer();
         const bool done = (m_current->kind == Kind::Command && endsInPrompt()) ||
-                          (m_current->kind == Kind::Poll && m_buffer.contains('\r')) ||
+                          (m_current->kind == Kind::Poll && m_buffer.contains('\r') && !m_buffer.startsWith('\r')) ||
                           (m_current->kind == Kind::Expect &&
                            (m_buffer.contains(m_current->expect) || endsInPrompt())); // or an error ended it
         if (done) complete();
@@ -231,8 +252,21 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
         return;
     }
     m_buffer.clear();
-    m_typedLineOpen = false; // the user's command is done: our requests may go
-    pump();
+    if (m_typedPrompts > 0 && --m_typedPrompts > 0) m_typedSettle.start(); // typed ahead: more prompts owed
+    pump(); // once the user's commands are done, our requests may go
+}
+
+void Pmc960Session::noteTyped(const QByteArray& bytes) {
+    static const QByteArray kEnds("\r?!&\x1b");
+    for (const char c : bytes) {
+        if (kEnds.contains(c)) {
+            m_typedSettle.stop();
+            ++m_typedPrompts;
+            m_typedPartial = false;
+        } else if (c != '\n') {
+            m_typedPartial = true;
+        }
+    }
 }
 
 Pmc960Response Pmc960Session::parse(const Request& request) const {

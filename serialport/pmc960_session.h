@@ -96,6 +96,7 @@ private:
     void write(const QByteArray& bytes, bool counted);
     void setState(State state);
     bool endsInPrompt() const;
+    void dropPromptsBeforePollAnswer();
     Pmc960Response parse(const Request& request) const;
 
     Link& m_link;
@@ -118,7 +119,15 @@ private:
     QByteArray m_resync;     // resynchronise(): written before each CR that asks for a prompt
     int m_silentAsks = 0;    // prompts asked for since the controller last sent anything
     QByteArray m_heldTyped;  // sendTyped() bytes waiting for the request in flight
-    bool m_typedLineOpen = false; // the user typed since the last prompt
+    // The user's line: commands typed and ended (CR, or a display character ? ! &) whose prompt has not come,
+    // and a command typed in part. While either holds, our requests and polls wait. A prompt owed that
+    // never comes (a '?' the controller took as part of something else) is forgotten after kTypedSettleMs.
+    static constexpr int kTypedSettleMs = 1000;
+    bool typedLineOpen() const { return m_typedPrompts > 0 || m_typedPartial; }
+    void noteTyped(const QByteArray& bytes);
+    int m_typedPrompts = 0;
+    bool m_typedPartial = false;
+    QTimer m_typedSettle;
 };
 
 } // namespace serialport

@@ -26,6 +26,8 @@ public:
     QString notReady() const override;
     void poll(const QStringList& names) override;
     void cancel() override { m_pollId = 0; }
+    // The status panel's own polls go out only while the line is idle: leave it idle half the time.
+    int minimumIntervalMs() const override { return 25; }
 
 private:
     void pollNext();

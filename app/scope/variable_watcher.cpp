@@ -12,7 +12,6 @@ constexpr int kRateSamples = 10; // the rate is measured over the last ten answe
 
 VariableWatcher::VariableWatcher(WatchSource& source, QObject* parent)
     : QObject(parent), m_source(source), m_store(100'000) {
-    m_retry.setInterval(kRetryMs);
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &VariableWatcher::poll);
     connect(&m_source, &WatchSource::answered, this, &VariableWatcher::onAnswered);
@@ -59,8 +58,11 @@ void VariableWatcher::setPauseReason(const QString& reason) {
 void VariableWatcher::poll() {
     if (!m_running || m_polling) return;
     setPauseReason(m_source.notReady());
-    if (isPaused()) return m_retry.start();
-    m_sentAt_s = double(m_clock.nsecsElapsed()) / 1e9;
+    if (isPaused()) return m_retry.start(kRetryMs);
+    const double now_s = double(m_clock.nsecsElapsed()) / 1e9;
+    const double wait_ms = (m_sentAt_s - now_s) * 1e3 + m_source.minimumIntervalMs();
+    if (m_store.channel(0).samples.size() > 0 && wait_ms >= 1) return m_retry.start(int(wait_ms));
+    m_sentAt_s = now_s;
     m_polling = true;
     m_source.poll(m_variables);
 }
@@ -88,7 +90,7 @@ void VariableWatcher::onFailed(const QString& reason, bool stopWatching) {
         return emit message(tr("Watching stopped: %1").arg(reason));
     }
     emit message(tr("A poll failed: %1").arg(reason));
-    if (m_running) m_retry.start();
+    if (m_running) m_retry.start(kRetryMs);
 }
 
 } // namespace app

@@ -37,6 +37,8 @@ public:
     virtual void poll(const QStringList& names) = 0;
     // Forget the poll in flight: its answer, if any, is dropped.
     virtual void cancel() = 0;
+    // The shortest time from one poll to the next: room on the link for the family's other polls.
+    virtual int minimumIntervalMs() const { return 0; }
 
     std::optional<Choice> choice(const QString& name) const;
 

@@ -110,17 +110,22 @@ void WatchView::stop() {
 // Appends only the new samples and drops what left the window: the graphs are never rebuilt.
 void WatchView::onSampled(double time_s) {
     const scope::SeriesStore& store = m_watcher->store();
+    QList<QCPAxis*> scaled; // each axis fits its first graph, then grows to hold the others on it
     for (int g = 0; g < m_plot->graphCount() && std::size_t(g) < store.channelCount(); ++g) {
         const auto& s = store.channel(std::size_t(g)).samples;
         for (auto it = s.rbegin(); it != s.rend() && it->time_s > m_plottedUntil_s; ++it)
             m_plot->graph(g)->addData(it->time_s, it->value); // addData keeps the graph sorted by key
         m_plot->graph(g)->data()->removeBefore(time_s - VariableWatcher::kWindow_s);
-        m_plot->graph(g)->rescaleValueAxis(false, true);
+        QCPAxis* y = m_plot->graph(g)->valueAxis();
+        m_plot->graph(g)->rescaleValueAxis(scaled.contains(y), true);
+        scaled.append(y);
     }
     m_plottedUntil_s = time_s;
     m_plot->xAxis->setRange(std::max(0.0, time_s - VariableWatcher::kWindow_s), std::max(time_s, 1.0));
-    for (QCPAxis* y : {m_plot->yAxis, m_plot->yAxis2})
+    for (QCPAxis* y : {m_plot->yAxis, m_plot->yAxis2}) {
         if (y->range().size() == 0) y->setRange(y->range().lower - 1, y->range().upper + 1);
+        else y->scaleRange(1.08, y->range().center()); // a margin: a trace on the frame is hard to see
+    }
     m_rate->setText(m_watcher->rateText());
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }

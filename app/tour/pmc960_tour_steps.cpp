@@ -124,20 +124,25 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                      .cleanUp = [&window] { pmc960(window)->parameterDock()->setFloating(false); }});
     // Watch Variables on the PMC-960: position and following error from status polls during an index.
     auto watch = std::make_shared<QPointer<WatchView>>();
+    auto indexed = std::make_shared<bool>(false);
     steps.push_back({.name = QStringLiteral("watch-pmc960"),
                      .act = [&window, watch] {
                          WatchView* view = *watch = pmc960(window)->watchVariables();
                          view->resize(900, 440);
                          view->watch({QStringLiteral("g"), QStringLiteral("f")});
-                         Pmc960StatusDock* status = pmc960(window)->statusDock();
-                         for (const char* command : {"SM2", "V40", "I30000-"})
-                             status->sendCommand(QString::fromLatin1(command));
                      },
-                     .ready = [watch] {
+                     .ready = [&window, watch, indexed] {
                          if (!*watch || (*watch)->watcher().store().channelCount() == 0) return false;
                          const auto& samples = (*watch)->watcher().store().channel(0).samples;
+                         Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         // The index of the status shot has ended (a move while moving is refused, #B2): back.
+                         if (!*indexed && samples.size() > 10 && status->value(QStringLiteral("togo")) == QLatin1String("0")) {
+                             for (const char* command : {"SM2", "V40", "I30000-"})
+                                 status->sendCommand(QString::fromLatin1(command));
+                             *indexed = true;
+                         }
                          // the index has run for a while: a ramp with samples on both sides of it
-                         return samples.size() > 30 && samples.front().value - samples.back().value > 20000;
+                         return *indexed && samples.size() > 40 && samples.front().value - samples.back().value > 20000;
                      },
                      .grab = [watch] { return *watch ? (*watch)->grab() : QPixmap(); },
                      .cleanUp = [watch] {

@@ -49,9 +49,9 @@ private slots:
         type(terminal, QStringLiteral("A?"));
         // The controller's echo, its answer and its prompt, as a terminal on the controller would show them.
         QTRY_VERIFY_WITH_TIMEOUT(terminal->text().contains(QStringLiteral("A2500")), kTimeoutMs);
-        QTRY_VERIFY_WITH_TIMEOUT(terminal->text().contains(QStringLiteral("2500\n= }")) ||
-                                     terminal->text().contains(QStringLiteral("A?2500")),
-                                 kTimeoutMs);
+        QTRY_VERIFY2_WITH_TIMEOUT(terminal->text().contains(QStringLiteral("2500\n= }")) ||
+                                      terminal->text().contains(QStringLiteral("A?2500")),
+                                  qPrintable(terminal->text()), kTimeoutMs);
         QVERIFY2(terminal->text().contains(QLatin1Char('}')), qPrintable(terminal->text()));
         // The status panel's polls (position, following error...) are not in the terminal.
         QVERIFY2(!terminal->text().contains(QChar(0x1D)), qPrintable(terminal->text()));

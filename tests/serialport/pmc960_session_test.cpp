@@ -91,6 +91,51 @@ private slots:
         QCOMPARE(polled.at(0).at(0).value<quint64>(), id);
     }
 
+    void aCommandTypedAheadKeepsTheLineUntilItsOwnPrompt() {
+        // The user types the next command before the last one's prompt came back: that prompt does not
+        // hand the line to a status poll in the middle of the next command's answer.
+        SimulatorLink link{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, 9600, true}};
+        Pmc960Session session{link};
+        link.open();
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 5000);
+        QByteArray shown;
+        connect(&session, &Pmc960Session::shownReceived, this, [&shown](const QByteArray& b) { shown += b; });
+        QSignalSpy polled(&session, &Pmc960Session::statusPolled);
+        session.setStatusPolling(5, "g");
+        for (int i = 0; i < 5; ++i) {
+            session.sendTyped("A2500\r");
+            session.sendTyped("A?");
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(shown.count("A?2500\r\n"), 5, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(polled.count() > 0, 5000); // polls resume once the user's commands are done
+        for (const QList<QVariant>& answer : polled) QCOMPARE(answer.at(1).toString(), QStringLiteral("0"));
+    }
+
+    void aPromptAheadOfAPollsAnswerIsNotTheAnswer() {
+        // A G refused at its sign while the last one still moves (#B2) leaves the rest of its line, the CR,
+        // to be read as an empty command with a prompt of its own: that prompt arrives while the poll that
+        // follows is on the wire (at 9600 baud, byte by byte).
+        SimulatorLink link{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, 9600, true}};
+        Pmc960Session session{link};
+        link.open();
+        QSignalSpy polled(&session, &Pmc960Session::pollAnswered);
+        QByteArray shown;
+        connect(&session, &Pmc960Session::shownReceived, this, [&shown](const QByteArray& b) { shown += b; });
+        session.send("SM2\r");
+        for (int i = 1; i <= 5; ++i) {
+            session.send("G" + QByteArray::number(i * 1000) + "+\r");
+            session.poll('g');
+            session.poll('f');
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(polled.count(), 10, 20000);
+        for (const QList<QVariant>& answer : polled) {
+            bool number = false;
+            answer.at(2).toString().toInt(&number);
+            QVERIFY2(number, qPrintable(answer.at(2).toString()));
+        }
+        QVERIFY2(shown.contains("\r\n=}"), shown.constData()); // the stray prompt went to the terminal
+    }
+
     void statusTimerPollsWhileIdle() {
         Fixture f;
         QSignalSpy status(&f.session, &Pmc960Session::statusPolled);
