@@ -6,8 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -242,18 +240,6 @@ TEST(Sc750Compiler, SizeLimitsOfStandardAndTurboModels) {
     const CompileResult data = compile("DIM s(100) AS STRING\nEND\n", CompileOptions{true});
     ASSERT_FALSE(data.ok());
     EXPECT_NE(data.error->message.find("too much data"), std::string::npos);
-}
-
-TEST(Sc750Compiler, CompilesA25KilobyteProgram) { // prints the time (goal < 50 ms); speed is not asserted
-    std::string program = "DIM a, b AS INTEGER\nDIM f AS FLOAT\n";
-    while (program.size() < 25000)
-        program += "IF a > 3 THEN\n  f = f * 1.5 + SIN(b) : b = b + 1\nELSE\n  a = a + 1\nEND IF\n";
-    const auto t0 = std::chrono::steady_clock::now();
-    const CompileResult r = compile(program, CompileOptions{true});
-    const auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    ASSERT_TRUE(r.ok()) << r.error->text();
-    RecordProperty("compile_ms", std::to_string(ms));
-    std::printf("sc750 compile: %zu bytes of source in %.1f ms (goal < 50 ms)\n", program.size(), ms);
 }
 
 } // namespace
