@@ -2,6 +2,7 @@
 #include "sc750_variables_dock.h"
 
 #include "sc750_debugger.h"
+#include "sc750_variable_browser.h"
 #include "sc750_workspace.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
@@ -13,6 +14,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QStringListModel>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -46,7 +48,16 @@ Sc750VariablesDock::Sc750VariablesDock(Sc750Workspace& workspace, QWidget* paren
     layout->addLayout(row);
     layout->addWidget(m_table, 1);
     layout->addWidget(m_message);
-    setWidget(body);
+    // Two tabs: Motion Dialogue's list of typed names, and every predefined variable of the catalog.
+    m_tabs = new QTabWidget(this);
+    m_tabs->addTab(body, tr("&Watch"));
+    m_browser = new Sc750VariableBrowser(workspace);
+    m_tabs->addTab(m_browser, tr("All &Variables"));
+    setWidget(m_tabs);
+    connect(m_browser, &Sc750VariableBrowser::watchRequested, this, [this](const QString& name) {
+        readVariable(name);
+        m_tabs->setCurrentIndex(0);
+    });
     showMessage(tr("Values can be changed while no program executes (after Stop or at a breakpoint)."), false);
 
     auto readTyped = [this] {
@@ -64,6 +75,12 @@ Sc750VariablesDock::Sc750VariablesDock(Sc750Workspace& workspace, QWidget* paren
     });
     connect(&workspace.debugger(), &Sc750Debugger::stateChanged, this, &Sc750VariablesDock::updateCompletions);
     updateCompletions();
+}
+
+void Sc750VariablesDock::showAllVariables() {
+    show();
+    raise();
+    m_tabs->setCurrentWidget(m_browser);
 }
 
 void Sc750VariablesDock::updateCompletions() {
@@ -148,6 +165,7 @@ void Sc750VariablesDock::setWritable(bool writable) {
 }
 
 void Sc750VariablesDock::focusName() {
+    m_tabs->setCurrentIndex(0);
     m_name->setFocus();
 }
 

@@ -1,6 +1,7 @@
 // Sc750VariablesDock: Motion Dialogue's Variables window (L2746-L2786) as a dock: type a name (a program
 // variable, "A(3)", or a predefined variable/parameter) and Enter reads it into the list; editing a value
 // writes it, which the controller allows only while no program executes; Refresh reads every row again.
+// Its second tab is the variable browser of every predefined variable (Sc750VariableBrowser).
 // GUI thread only.
 #pragma once
 
@@ -10,10 +11,12 @@ class QCompleter;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 
 namespace app {
 
+class Sc750VariableBrowser;
 class Sc750Workspace;
 
 class Sc750VariablesDock final : public QDockWidget {
@@ -29,6 +32,9 @@ public:
     // Writes are refused while a program runs; the value column is read-only then.
     void setWritable(bool writable);
     void focusName();
+    // Shows the dock on its All Variables tab.
+    void showAllVariables();
+    Sc750VariableBrowser* browser() const { return m_browser; }
 
     // The value shown for name ("" when not listed or not read yet), and the last error, for tests.
     QString value(const QString& name) const;
@@ -49,6 +55,8 @@ private:
     QLineEdit* m_name;
     QCompleter* m_completer;
     QTableWidget* m_table;
+    QTabWidget* m_tabs = nullptr;
+    Sc750VariableBrowser* m_browser = nullptr;
     QPushButton* m_refresh;
     QLabel* m_message;
     bool m_writable = true;

@@ -10,6 +10,7 @@
 #include "sc750/sc750_controller_menu.h"
 #include "sc750/sc750_debugger.h"
 #include "sc750/sc750_output_dock.h"
+#include "sc750/sc750_variable_browser.h"
 #include "sc750/sc750_variables_dock.h"
 #include "sc750/sc750_workspace.h"
 #include "scope/variable_watcher.h"
@@ -121,6 +122,27 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                          return !sc750(window)->variablesDock()->value(QStringLiteral("POS.COMMAND")).isEmpty();
                      },
                      .grab = [&window] { return window.grab(); }});
+    // The variable browser: every predefined variable, grouped, the rows in view read live.
+    steps.push_back({.name = QStringLiteral("variables-sc750-all"),
+                     .act = [&window] {
+                         Sc750VariablesDock* vars = sc750(window)->variablesDock();
+                         vars->showAllVariables();
+                         vars->setFloating(true);
+                         vars->resize(1040, 640);
+                         vars->browser()->reveal(QStringLiteral("POSITION"));
+                     },
+                     .ready = [&window] {
+                         Sc750VariableBrowser* browser = sc750(window)->variablesDock()->browser();
+                         for (const char* name : {"AUTOSTART", "RUN.SPEED", "POSITION", "IFB", "LOGGEDON"})
+                             if (browser->value(QString::fromLatin1(name)).isEmpty()) return false; // all in view read
+                         return true;
+                     },
+                     .grab = [&window] { return sc750(window)->variablesDock()->grab(); },
+                     .cleanUp = [&window] {
+                         Sc750VariablesDock* vars = sc750(window)->variablesDock();
+                         vars->setFloating(false);
+                         vars->focusName();
+                     }});
     steps.push_back({.name = QStringLiteral("sc750-function-call"),
                      .act = [&window] { sc750(window)->showFunctionCall(); },
                      .ready = [&window] {

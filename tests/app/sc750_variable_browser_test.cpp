@@ -1,0 +1,133 @@
+// The SC750's variable browser (issue 8: "the variable browser works for this family too"): every
+// predefined variable of the catalog in its group, live values read with G frames, an edit checked against
+// the catalog before a P frame goes out, the controller's refusal while a program runs, Add to Watch.
+#include "app/main_window.h"
+#include "app/sc750/sc750_controller_menu.h"
+#include "app/sc750/sc750_debugger.h"
+#include "app/sc750/sc750_variable_browser.h"
+#include "app/sc750/sc750_variable_groups.h"
+#include "app/sc750/sc750_variables_dock.h"
+#include "app/sc750/sc750_workspace.h"
+
+#include "drive_core/catalog/sc750_catalog.h"
+#include "editor/program_editor.h"
+#include "serialport/sc750_session.h"
+
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QTreeWidget>
+
+using app::MainWindow;
+using app::Sc750VariableBrowser;
+using drive_core::DriveFamily;
+namespace catalog = drive_core::catalog::sc750;
+
+namespace {
+constexpr int kTimeoutMs = 20000;
+
+const catalog::VariableInfo& info(const char* name) {
+    return *catalog::findVariable(name);
+}
+} // namespace
+
+class Sc750VariableBrowserTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskSc750VariableBrowserTest"));
+        QSettings().clear();
+    }
+
+    void everyVariableHasItsGroupAndEditsAreChecked() {
+        const QStringList groups = app::sc750VariableGroups();
+        for (const catalog::VariableInfo& v : catalog::variables())
+            QVERIFY2(app::sc750VariableGroup(v) != groups.last(), v.name.data()); // none left in "Other"
+        QCOMPARE(app::sc750VariableGroup(info("KVI")), QStringLiteral("Set-up parameters"));
+        QCOMPARE(app::sc750VariableGroup(info("RUN.SPEED")), QStringLiteral("Motion profile"));
+        QCOMPARE(app::sc750VariableGroup(info("POSITION")), QStringLiteral("Position, velocity, current"));
+        QCOMPARE(app::sc750VariableGroup(info("INP3")), QStringLiteral("I/O"));
+        QCOMPARE(app::sc750VariableGroup(info("WHEN.POS")), QStringLiteral("WHEN latches"));
+        QCOMPARE(app::sc750VariableGroup(info("TMOUT_2")), QStringLiteral("Timers"));
+        QCOMPARE(app::sc750VariableGroup(info("ENC.FREQ")), QStringLiteral("Gearing and encoder"));
+
+        QVERIFY(!app::sc750CheckValue(info("KVI"), QStringLiteral("20")));
+        QCOMPARE(*app::sc750CheckValue(info("KVI"), QStringLiteral("5000")), QStringLiteral("KVI must lie within 0 \u2013 1000."));
+        QVERIFY(app::sc750CheckValue(info("POLECOUNT"), QStringLiteral("4.5"))->contains(QStringLiteral("INTEGER")));
+        QVERIFY(app::sc750CheckValue(info("POSITION"), QStringLiteral("1"))->contains(QStringLiteral("read only")));
+        QVERIFY(app::sc750CheckValue(info("RUN.SPEED"), QStringLiteral("fast"))->contains(QStringLiteral("number")));
+    }
+
+    void liveValuesEditsAndRefusals() {
+        MainWindow window;
+        window.show();
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
+        auto& ws = *static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::Sc750VariablesDock* dock = ws.variablesDock();
+        dock->showAllVariables();
+        dock->setFloating(true);
+        dock->resize(900, 700);
+        Sc750VariableBrowser* browser = dock->browser();
+        QVERIFY(browser->isVisible());
+        QCOMPARE(browser->variableCount(), int(catalog::variables().size()));
+
+        // The set-up parameters are at the top, in view: their power-up values arrive by themselves.
+        QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("KVI")), QStringLiteral("5"), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("POLECOUNT")), QStringLiteral("4"), kTimeoutMs);
+
+        // A value written through the browser is what the controller reports, read back with G.
+        browser->reveal(QStringLiteral("RUN.SPEED"));
+        QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("RUN.SPEED")), QStringLiteral("1000"), kTimeoutMs);
+        QSignalSpy written(browser, &Sc750VariableBrowser::written);
+        QVERIFY(browser->writeValue(QStringLiteral("RUN.SPEED"), QStringLiteral("1234")));
+        QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, kTimeoutMs);
+        QVERIFY(written.at(0).at(1).toBool());
+        QCOMPARE(browser->value(QStringLiteral("RUN.SPEED")), QStringLiteral("1234"));
+        QVERIFY(browser->isChanged(QStringLiteral("RUN.SPEED"))); // highlighted: it was 1000
+        QString readBack;
+        ws.send('G', QStringLiteral("RUN.SPEED"), [&readBack](const serialport::Sc750Reply& r) { readBack = r.payload; });
+        QTRY_COMPARE_WITH_TIMEOUT(readBack, QStringLiteral("RUN.SPEED=1234"), kTimeoutMs);
+
+        // Out of range: refused with the range, and no frame goes out.
+        browser->setLive(false);
+        QTest::qWait(200); // a read already on its way comes back
+        QSignalSpy sent(ws.session(), &serialport::Sc750Session::rawSent);
+        QVERIFY(!browser->writeValue(QStringLiteral("KVI"), QStringLiteral("5000")));
+        QVERIFY2(browser->message().contains(QStringLiteral("0 \u2013 1000")), qPrintable(browser->message()));
+        QTest::qWait(300);
+        QCOMPARE(sent.count(), 0);
+        browser->setLive(true);
+
+        // Search narrows the tree.
+        browser->setFilter(QStringLiteral("registration"));
+        QVERIFY(browser->tree()->topLevelItemCount() > 1);
+        int shownGroups = 0;
+        for (int g = 0; g < browser->tree()->topLevelItemCount(); ++g) shownGroups += !browser->tree()->topLevelItem(g)->isHidden();
+        QVERIFY(shownGroups >= 1 && shownGroups < browser->tree()->topLevelItemCount());
+        browser->setFilter(QString());
+
+        // While a program runs the controller refuses writes: its own answer is shown.
+        qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
+        window.editor()->setText(QStringLiteral("Spin:\n  PAUSE.TIME = 0.1\n  PAUSE\nGOTO Spin\n"));
+        ws.debugger().run();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), app::Sc750Debugger::State::Running, kTimeoutMs);
+        dock->showAllVariables();
+        QVERIFY(browser->writeValue(QStringLiteral("RUN.SPEED"), QStringLiteral("500")));
+        QTRY_COMPARE_WITH_TIMEOUT(written.count(), 2, kTimeoutMs);
+        QVERIFY(!written.at(1).at(1).toBool());
+        QVERIFY2(browser->message().contains(QStringLiteral("PROGRAM RUNNING")), qPrintable(browser->message()));
+        QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("RUN.SPEED")), QStringLiteral("1234"), kTimeoutMs);
+
+        // Add to Watch: the Motion Dialogue list reads it.
+        emit browser->watchRequested(QStringLiteral("KVI"));
+        QTRY_COMPARE_WITH_TIMEOUT(dock->value(QStringLiteral("KVI")), QStringLiteral("5"), kTimeoutMs);
+    }
+};
+
+QTEST_MAIN(Sc750VariableBrowserTest)
+#include "sc750_variable_browser_test.moc"
