@@ -3,11 +3,14 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 namespace scope {
 
 namespace {
+
+constexpr double kMaxPlaySamples = 1'000'000;
 
 std::vector<std::string> words(const std::string& line) {
     std::istringstream in(line);
@@ -21,7 +24,7 @@ std::optional<double> number(const std::string& text) {
     const char* first = text.data();
     if (!text.empty() && text.front() == '+') ++first;
     const auto [end, ec] = std::from_chars(first, text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
     return value;
 }
 
@@ -51,7 +54,11 @@ PlayParseResult parsePlay(const std::vector<std::string>& lines,
     const auto head = words(lines[at]);
     const auto n = head.size() >= 4 ? number(head[1]) : std::nullopt;
     const auto t = head.size() >= 4 ? number(head[2]) : std::nullopt;
-    if (head.size() < 4 || head.size() > 7 || upper(head[0]) != "RECORD" || !n || !t || *t <= 0) {
+    // A count the drive could have printed: a whole number of samples (the BDS5 takes at most 1000;
+    // a listing saved elsewhere may hold more, up to what a series can keep) and a finite interval.
+    const bool countOk = n && *n >= 1 && *n <= kMaxPlaySamples && *n == std::floor(*n);
+    const bool intervalOk = t && *t > 0;
+    if (head.size() < 4 || head.size() > 7 || upper(head[0]) != "RECORD" || !countOk || !intervalOk) {
         result.error =
             "line " + std::to_string(at + 1) + ": expected \"RECORD <n> <t> <variables>\", found \"" + lines[at] + "\"";
         return result;

@@ -46,6 +46,18 @@ TEST(PlayParser, NamesTheLineItCannotRead) {
     EXPECT_NE(parsePlay({"HELLO"}).error.find("line 1"), std::string::npos);
     EXPECT_EQ(parsePlay({"RECORD 2 1 VCMD VFB", "1 2", "3"}).error, "line 3: 1 values, expected 2");
     EXPECT_EQ(parsePlay({"RECORD 2 1 VFB", "abc"}).error, "line 2: \"abc\" is not a number");
+    EXPECT_EQ(parsePlay({"RECORD 2 1 VFB", "nan"}).error, "line 2: \"nan\" is not a number");
+}
+
+// capture_files_fuzz finding: a RECORD count past int's range was converted to int (undefined).
+TEST(PlayParser, RefusesACountOrIntervalNoDriveCouldPrint) {
+    for (const char* head : {"RECORD 66666666666666666666 2 PFB", "RECORD 2.5 2 PFB", "RECORD 0 2 PFB",
+                             "RECORD 2 inf PFB", "RECORD 2 nan PFB"}) {
+        const auto r = parsePlay({head, "1"});
+        EXPECT_FALSE(r.capture) << head;
+        EXPECT_NE(r.error.find("line 1: expected \"RECORD <n> <t> <variables>\""), std::string::npos) << head;
+    }
+    EXPECT_EQ(parsePlay({"RECORD 1000000 1 PFB", "1"}).requestedSamples, 1000000);
 }
 
 TEST(CaptureCsv, RoundTripKeepsNamesUnitsIntervalAndValues) {
