@@ -7,6 +7,7 @@
 #include "bds5_interpreter.h"
 #include "bds5_port.h"
 #include "bds5_resident_editor.h"
+#include "bds5_rotary.h"
 #include "bds5_simulator_controls.h"
 #include "bds5_uart.h"
 #include "drive_core/drive.h"
@@ -123,6 +124,7 @@ private:
     double m_masterFraction = 0;  // external counts not yet whole
     bool m_homeLast = false;      // HOME as last seen, for capture's edge
     double m_homeLastRev = 0;     // the shaft then (revolutions)
+    Bds5Rotary m_rotary;          // ROTARY's roll-over (the fraction of a count it carries)
     Bench m_bench;
     Bds5SimulatorControls m_controls{*this};
 };

@@ -87,6 +87,14 @@ void Bds5Drive::servoTick() {
         put(vars, r.pext, std::int64_t(vars.read(r.pext)) + (m_state.servo.feedback_counts() - pfbBefore));
         if (active) put(vars, r.pe, std::llround(m_state.motion.servoTarget_counts()) - vars.read(r.pext));
     }
+    // Rotary mode (L5256): PFB outside 0..PROTARY rolls PFB, PCMD and PFNL over together, so PE, the
+    // motion under way and the moves queued behind it carry on as if nothing happened. Disabled too: a
+    // shaft turned by hand rolls over the same way.
+    if (const std::int64_t shift = m_rotary.rollover(m_state.servo.feedback_counts(), vars)) {
+        m_state.servo.shift(shift);
+        m_state.motion.shiftFrame(shift, vars);
+        put(vars, r.pfb, m_state.servo.feedback_counts());
+    }
     // Clamping (L2659-2732): PE beyond PECLAMP while a profile runs means the part met a stop: the profile
     // stops there (SEG 0, PCMD frozen) and the loop holds against it at ILIM; PE stays near PECLAMP.
     if (active && m_state.motion.moving() && on(vars, r.clamp, false) &&

@@ -19,6 +19,9 @@ public:
 
     // The counts the gearbox has added to the command since power-up (it keeps them after GEAR OFF).
     std::int64_t offset_counts() const { return m_offset_counts; }
+    // The rotary roll-over moves the frame the command is counted in (the profile's positions are
+    // relative to this offset, so the roll-over is a change of this one number).
+    void shiftFrame(std::int64_t counts) { m_offset_counts += counts; }
     // Its speed over the last period, counts/s (0 with GEAR off).
     double velocity_cps() const { return m_velocity_cps; }
 

@@ -281,6 +281,11 @@ void Bds5Motion::followFeedback(double pfb_counts) {
     if (!m_profile.moving()) m_profile.setPosition(toProfile(pfb_counts));
 }
 
+void Bds5Motion::shiftFrame(std::int64_t counts, Bds5VariableStore& vars) {
+    m_gearbox.shiftFrame(counts);
+    writeVariables(vars);
+}
+
 int Bds5Motion::zeroPositionError(double pfb_counts) {
     if (m_profile.moving()) return 57;
     m_profile.setPosition(toProfile(pfb_counts));
