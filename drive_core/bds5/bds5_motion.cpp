@@ -278,6 +278,7 @@ void Bds5Motion::writeVariables(Bds5VariableStore& vars) const {
 }
 
 void Bds5Motion::followFeedback(double pfb_counts) {
+    m_gearbox.stopRamp(); // inactive: RAMP's velocity command starts from rest when the drive is enabled
     if (!m_profile.moving()) m_profile.setPosition(toProfile(pfb_counts));
 }
 
