@@ -11,6 +11,7 @@
 #include "bds5_simulator_controls.h"
 #include "bds5_uart.h"
 #include "drive_core/drive.h"
+#include "drive_core/master_signal.h"
 
 #include <array>
 #include <optional>
@@ -67,7 +68,7 @@ private:
     // What the bench sets beyond the input pins.
     struct Bench {
         std::optional<double> homeAt_rev; // the HOME switch closes around this shaft position
-        double masterFrequency_Hz = 0;    // external input, counts per second
+        MasterSignal master;              // external input: counts per second, and a wave on it
         bool feedbackConnected = true;    // resolver wires; broken: ERR 17 FEEDBACK LOSS while enabled
     };
     static constexpr double kHomeWindow_rev = 1.0 / 64;

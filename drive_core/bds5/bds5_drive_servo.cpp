@@ -160,17 +160,20 @@ void Bds5Drive::homeAndCapture() {
     put(vars, r.cap, 0);
 }
 
-// The master (external encoder) input: PEXT counts, VEXT its frequency, from the bench's frequency.
+// The master (external encoder or analog) input: PEXT counts, VEXT its frequency, from the bench's steady
+// frequency and wave; VEXT is the frequency over the last period (the counts it brought, per second).
 void Bds5Drive::masterInput() {
-    if (m_bench.masterFrequency_Hz == 0) return;
+    if (m_bench.master.idle()) return;
     const ChainRefs& r = chainRefs();
+    const double counts = m_bench.master.advance(1e-3);
     if (on(m_state.variables, r.extloop, false)) return; // the external input carries the motor's encoder
-    m_masterFraction += m_bench.masterFrequency_Hz * 1e-3;
-    const double whole = std::trunc(m_masterFraction);
+    m_masterFraction += counts;
+    // A sum within a hair of a whole count is that count (the wave's integral is exact only to rounding).
+    const double whole = std::floor(m_masterFraction + 1e-9);
     m_masterFraction -= whole;
     if (r.pext.info)
         m_state.variables.set(r.pext, std::int32_t(std::int64_t(m_state.variables.read(r.pext)) + std::int64_t(whole)));
-    put(m_state.variables, r.vext, std::llround(m_bench.masterFrequency_Hz * kBasicPerCps));
+    put(m_state.variables, r.vext, std::llround(counts * 1e3 * kBasicPerCps));
 }
 
 } // namespace drive_core::bds5
