@@ -35,6 +35,7 @@ int usage(int code) {
                  "                    input N on|off   enable on|off   motion on|off   home on|off\n"
                  "                    home-at REV   limits on|off on|off (positive, negative)\n"
                  "                    load-torque NM   load-inertia KGM2   master-hz HZ   motor NAME\n"
+                 "                    master-wave sine|square|triangle AMP_HZ FREQ_HZ   master-wave off\n"
                  "                    feedback on|off   power-cycle   status\n"
                  "                  With --pty, \"CONTROL PATH\" is printed after the PTY line.\n");
     return code;

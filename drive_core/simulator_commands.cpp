@@ -44,6 +44,22 @@ std::string format(double value) {
     return buffer;
 }
 
+const char* shapeName(MasterWaveShape shape) {
+    switch (shape) {
+    case MasterWaveShape::Sine: return "sine";
+    case MasterWaveShape::Square: return "square";
+    case MasterWaveShape::Triangle: return "triangle";
+    case MasterWaveShape::None: break;
+    }
+    return "off";
+}
+
+// "off", or shape:amplitude_hz:frequency_hz.
+std::string waveText(const MasterWave& w) {
+    if (w.shape == MasterWaveShape::None) return "off";
+    return std::string(shapeName(w.shape)) + ":" + format(w.amplitude_Hz) + ":" + format(w.frequency_Hz);
+}
+
 // One line of key=value pairs; inputs and outputs as bit strings, I1 / O1 first.
 std::string statusLine(const SimulatorStatus& s) {
     return "inputs=" + bits(s.inputs) + " outputs=" + bits(s.outputs) + " enable=" + (s.enableInput ? "1" : "0") +
@@ -54,7 +70,8 @@ std::string statusLine(const SimulatorStatus& s) {
            " current_a=" + format(s.current_a) + " load_torque_nm=" + format(s.loadTorque_Nm) +
            " load_inertia_kgm2=" + format(s.loadInertia_kgm2) + " master_hz=" + format(s.masterFrequency_Hz) +
            " motor=" + s.motorName + " feedback=" + (s.feedbackConnected ? "1" : "0") +
-           " relay=" + (s.relayClosed ? "1" : "0") + " brake_released=" + (s.brakeReleased ? "1" : "0");
+           " relay=" + (s.relayClosed ? "1" : "0") + " brake_released=" + (s.brakeReleased ? "1" : "0") +
+           " master_wave=" + waveText(s.masterWave);
 }
 } // namespace
 
@@ -104,9 +121,27 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
         if (verb == "master-hz") controls.setMasterFrequency_Hz(*value);
         return "OK";
     }
+    // master-wave sine|square|triangle AMP_HZ FREQ_HZ | master-wave off
+    if (verb == "master-wave" && (arity(1) || arity(3))) {
+        MasterWave wave;
+        if (arity(1)) {
+            if (w[1] != "off") return "ERROR expected master-wave off or a shape, amplitude and frequency";
+        } else {
+            for (const auto shape : {MasterWaveShape::Sine, MasterWaveShape::Square, MasterWaveShape::Triangle})
+                if (w[1] == shapeName(shape)) wave.shape = shape;
+            if (wave.shape == MasterWaveShape::None) return "ERROR expected sine, square or triangle";
+            const auto amplitude = number(w[2]);
+            const auto frequency = number(w[3]);
+            if (!amplitude || !frequency) return "ERROR expected a number";
+            if (!(*frequency > 0)) return "ERROR wave frequency must be above 0";
+            wave.amplitude_Hz = *amplitude;
+            wave.frequency_Hz = *frequency;
+        }
+        return controls.setMasterWave(wave) ? "OK" : "ERROR this drive has no master waveform";
+    }
     if (verb == "motor" && arity(1)) return controls.selectMotor(w[1]) ? "OK" : "ERROR unknown motor " + w[1];
     for (const char* known : {"status", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at",
-                              "load-torque", "load-inertia", "master-hz", "motor", "feedback"})
+                              "load-torque", "load-inertia", "master-hz", "master-wave", "motor", "feedback"})
         if (verb == known) return "ERROR wrong number of arguments for " + verb;
     return "ERROR unknown command " + verb;
 }

@@ -9,6 +9,17 @@
 
 namespace drive_core {
 
+// A waveform on the master (external encoder / analog) input: its frequency swings around the steady
+// master frequency (setMasterFrequency_Hz) by amplitude_Hz, repeating frequency_Hz times a second. The
+// BDS5's analog input option turns 10 V into 2 MHz (L2935), so an analog sine of V volts peak is a
+// sine of V x 200 kHz here.
+enum class MasterWaveShape { None, Sine, Square, Triangle };
+struct MasterWave {
+    MasterWaveShape shape = MasterWaveShape::None;
+    double amplitude_Hz = 0; // peak swing of the master's frequency, counts per second
+    double frequency_Hz = 1; // repetitions per second (> 0)
+};
+
 // A snapshot of the bench, for displays. Units are in the names; counts are the drive's native units.
 struct SimulatorStatus {
     std::vector<bool> inputs;  // I1.. as numbered in the manual (index 0 = I1)
@@ -26,6 +37,7 @@ struct SimulatorStatus {
     double loadTorque_Nm = 0;
     double loadInertia_kgm2 = 0;
     double masterFrequency_Hz = 0; // external encoder / master input, counts per second
+    MasterWave masterWave;         // and the wave on top of it
     std::string motorName;
     bool feedbackConnected = true; // resolver / encoder wires (off: the drive faults, BDS5 ERR 17)
     bool relayClosed = false;      // fault relay: hardware watchdog OK (BDS5 C2 pins 16/17)
@@ -51,13 +63,20 @@ public:
     virtual bool selectMotor(std::string_view name) = 0;
     virtual void powerCycle() = 0;
     virtual SimulatorStatus status() const = 0;
+    // Puts a wave on the master input (MasterWaveShape::None removes it); the wave starts at its zero
+    // crossing now. False if the drive cannot simulate one.
+    virtual bool setMasterWave(const MasterWave& wave) {
+        (void)wave;
+        return false;
+    }
     // Breaks (false) or reconnects the motor's feedback wires; a drive that cannot simulate it ignores it.
     virtual void setFeedbackConnected(bool connected) { (void)connected; }
 };
 
 // The side channel's text form, one command per line, for servodesk-sim's control socket and for tests:
 //   input N on|off · enable on|off · motion on|off · home on|off · home-at REV · limits POS NEG (on|off)
-//   load-torque NM · load-inertia KGM2 · master-hz HZ · motor NAME · feedback on|off · power-cycle · status
+//   load-torque NM · load-inertia KGM2 · master-hz HZ · master-wave sine|square|triangle AMP_HZ FREQ_HZ ·
+//   master-wave off · motor NAME · feedback on|off · power-cycle · status
 // Returns "OK", "ERROR <reason>", or for `status` one line of key=value pairs.
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
 

@@ -46,6 +46,7 @@ void Bds5Drive::powerUp() {
     m_poweredBefore = true;
     m_state.enabled = false;
     m_state.servo.powerUp();
+    m_rotary.reset();
     m_servoRemainder = Microseconds{0};
     logError(m_state, 199); // DRIVE POWERED UP is logged at every power-up (L6118, L7503)
     m_executor.stop();

@@ -7,9 +7,11 @@
 #include "bds5_interpreter.h"
 #include "bds5_port.h"
 #include "bds5_resident_editor.h"
+#include "bds5_rotary.h"
 #include "bds5_simulator_controls.h"
 #include "bds5_uart.h"
 #include "drive_core/drive.h"
+#include "drive_core/master_signal.h"
 
 #include <array>
 #include <optional>
@@ -66,7 +68,7 @@ private:
     // What the bench sets beyond the input pins.
     struct Bench {
         std::optional<double> homeAt_rev; // the HOME switch closes around this shaft position
-        double masterFrequency_Hz = 0;    // external input, counts per second
+        MasterSignal master;              // external input: counts per second, and a wave on it
         bool feedbackConnected = true;    // resolver wires; broken: ERR 17 FEEDBACK LOSS while enabled
     };
     static constexpr double kHomeWindow_rev = 1.0 / 64;
@@ -123,6 +125,7 @@ private:
     double m_masterFraction = 0;  // external counts not yet whole
     bool m_homeLast = false;      // HOME as last seen, for capture's edge
     double m_homeLastRev = 0;     // the shaft then (revolutions)
+    Bds5Rotary m_rotary;          // ROTARY's roll-over (the fraction of a count it carries)
     Bench m_bench;
     Bds5SimulatorControls m_controls{*this};
 };

@@ -87,6 +87,14 @@ void Bds5Drive::servoTick() {
         put(vars, r.pext, std::int64_t(vars.read(r.pext)) + (m_state.servo.feedback_counts() - pfbBefore));
         if (active) put(vars, r.pe, std::llround(m_state.motion.servoTarget_counts()) - vars.read(r.pext));
     }
+    // Rotary mode (L5256): PFB outside 0..PROTARY rolls PFB, PCMD and PFNL over together, so PE, the
+    // motion under way and the moves queued behind it carry on as if nothing happened. Disabled too: a
+    // shaft turned by hand rolls over the same way.
+    if (const std::int64_t shift = m_rotary.rollover(m_state.servo.feedback_counts(), vars)) {
+        m_state.servo.shift(shift);
+        m_state.motion.shiftFrame(shift, vars);
+        put(vars, r.pfb, m_state.servo.feedback_counts());
+    }
     // Clamping (L2659-2732): PE beyond PECLAMP while a profile runs means the part met a stop: the profile
     // stops there (SEG 0, PCMD frozen) and the loop holds against it at ILIM; PE stays near PECLAMP.
     if (active && m_state.motion.moving() && on(vars, r.clamp, false) &&
@@ -152,17 +160,20 @@ void Bds5Drive::homeAndCapture() {
     put(vars, r.cap, 0);
 }
 
-// The master (external encoder) input: PEXT counts, VEXT its frequency, from the bench's frequency.
+// The master (external encoder or analog) input: PEXT counts, VEXT its frequency, from the bench's steady
+// frequency and wave; VEXT is the frequency over the last period (the counts it brought, per second).
 void Bds5Drive::masterInput() {
-    if (m_bench.masterFrequency_Hz == 0) return;
+    if (m_bench.master.idle()) return;
     const ChainRefs& r = chainRefs();
+    const double counts = m_bench.master.advance(1e-3);
     if (on(m_state.variables, r.extloop, false)) return; // the external input carries the motor's encoder
-    m_masterFraction += m_bench.masterFrequency_Hz * 1e-3;
-    const double whole = std::trunc(m_masterFraction);
+    m_masterFraction += counts;
+    // A sum within a hair of a whole count is that count (the wave's integral is exact only to rounding).
+    const double whole = std::floor(m_masterFraction + 1e-9);
     m_masterFraction -= whole;
     if (r.pext.info)
         m_state.variables.set(r.pext, std::int32_t(std::int64_t(m_state.variables.read(r.pext)) + std::int64_t(whole)));
-    put(m_state.variables, r.vext, std::llround(m_bench.masterFrequency_Hz * kBasicPerCps));
+    put(m_state.variables, r.vext, std::llround(counts * 1e3 * kBasicPerCps));
 }
 
 } // namespace drive_core::bds5

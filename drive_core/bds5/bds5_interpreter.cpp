@@ -374,6 +374,10 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
     if (r.error) return Bds5Error{r.error, expression, 0};
     if (name == "GATEMODE" && r.value == 1 && m_state.motion.moving()) // not while motion is commanded (L5957)
         return Bds5Error{57, name, 0};
+    // PNUM, PDEN and PROTARY cannot change with ROTARY on (L5258); the manual names no error, ERR 59 NOT
+    // w/ROTARY is the one that says why.
+    if ((name == "PNUM" || name == "PDEN" || name == "PROTARY") && m_state.variables.read("ROTARY").value_or(0) != 0)
+        return Bds5Error{59, name, 0};
     if (name == "ROTARY" && r.value == 1) { // PFB must already lie in 0..PROTARY (ERR 61, L7322)
         const auto pfb = m_state.variables.read("PFB").value_or(0);
         if (pfb < 0 || pfb > m_state.variables.read("PROTARY").value_or(0)) return Bds5Error{61, name, 0};

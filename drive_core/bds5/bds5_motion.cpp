@@ -105,8 +105,9 @@ int Bds5Motion::jogTo(const Bds5VariableStore& vars, bool enabled, std::int64_t 
     if (rampTime > kMaxRampSeconds) return 32;
     std::vector<motion::Segment> segments{{hold / v0, 0, 1}, {rampTime, v1 > v0 ? rate : -rate, 2, shape(vars)}};
     if (v1 != 0) segments.push_back({std::numeric_limits<double>::infinity(), 0, 3});
-    const std::optional<double> end =
-        v1 == 0 ? std::optional<double>(m_profile.position() + hold + rampDistance) : std::nullopt;
+    // JT to rest lands exactly on its count (not on position + hold + ramp, which rounding leaves a hair off).
+    const double stopAt = to ? toProfile(double(position)) : toProfile(double(position)) + rampDistance;
+    const std::optional<double> end = v1 == 0 ? std::optional<double>(stopAt) : std::nullopt;
     m_profile.start(std::move(segments), end);
     return 0;
 }
@@ -278,7 +279,13 @@ void Bds5Motion::writeVariables(Bds5VariableStore& vars) const {
 }
 
 void Bds5Motion::followFeedback(double pfb_counts) {
+    m_gearbox.stopRamp(); // inactive: RAMP's velocity command starts from rest when the drive is enabled
     if (!m_profile.moving()) m_profile.setPosition(toProfile(pfb_counts));
+}
+
+void Bds5Motion::shiftFrame(std::int64_t counts, Bds5VariableStore& vars) {
+    m_gearbox.shiftFrame(counts);
+    writeVariables(vars);
 }
 
 int Bds5Motion::zeroPositionError(double pfb_counts) {

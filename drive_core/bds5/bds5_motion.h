@@ -54,6 +54,9 @@ public:
     bool camming() const { return m_cam.on(); }
     // CLAMP (L2659-2732): the profile stops where it is (SEG 0, PCMD frozen); the loop keeps pushing.
     void clampStop();
+    // Rotary roll-over: PCMD, PFNL and every queued end position move by `counts`; the motion goes on
+    // unchanged (the profile runs relative to its frame). Rewrites PCMD and PFNL.
+    void shiftFrame(std::int64_t counts, Bds5VariableStore& vars);
     int zeroPositionError(double pfb_counts); // ZPE: PCMD := PFB; 57 while motion is commanded
     // Disabled (L2115): PCMD follows PFB.
     void followFeedback(double pfb_counts);

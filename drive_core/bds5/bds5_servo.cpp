@@ -159,11 +159,16 @@ double Bds5Servo::currentCommand(double ve, double vfb, double vcmd, bool enable
         if (std::abs(next) < limit || (next > 0) != (step > 0)) m_integral_radPerS += step;
         command = kv * (m_integral_radPerS - vfb);
     }
-    if (get(vars, r.lpf) != 0) { // two cascaded one-pole filters at LPFHZ, exact for the 1 ms hold
-        const double hz = std::max(get(vars, r.lpfhz), 1.0);
+    // LPF (L6475): "two cascaded, low-pass, single-pole filters, both with a 3 dB frequency of" LPFHZ. Each
+    // is y += (1 - p)(x - y) with its pole p placed so the sampled filter is 3 dB down exactly at LPFHZ:
+    // 2 (1 - p)^2 = |1 - p e^-jw|^2 gives p^2 - (4 - 2 cos w) p + 1 = 0 (w = 2 pi LPFHZ T). At low LPFHZ
+    // p is e^-w, the continuous pole; near the 500 Hz Nyquist limit it still keeps the manual's 3 dB point.
+    if (get(vars, r.lpf) != 0) {
+        const double hz = std::clamp(get(vars, r.lpfhz), 1.0, 0.5 / kPeriod_s);
         if (hz != m_lpfHz) {
             m_lpfHz = hz;
-            m_lpfAlpha = 1 - std::exp(-2 * std::numbers::pi * hz * kPeriod_s);
+            const double b = 2 - std::cos(2 * std::numbers::pi * hz * kPeriod_s);
+            m_lpfAlpha = 1 - (b - std::sqrt(b * b - 1));
         }
         const double alpha = m_lpfAlpha;
         m_lpf[0] += alpha * (command - m_lpf[0]);

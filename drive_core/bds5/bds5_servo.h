@@ -41,6 +41,11 @@ public:
     std::int64_t feedbackAt(double angle_rad) const;
     // NORM / PFB=: PFB reads `counts` from now on, the shaft does not move.
     void normalize(std::int64_t counts);
+    // Rotary roll-over: PFB reads `counts` more from now on (the shaft does not move).
+    void shift(std::int64_t counts) {
+        m_offset_counts += counts;
+        m_feedback_counts += counts;
+    }
 
     static constexpr double kPeriod_s = 0.001;
 

@@ -53,7 +53,12 @@ void Bds5SimulatorControls::setLoadInertia_kgm2(double inertia_kgm2) {
 }
 
 void Bds5SimulatorControls::setMasterFrequency_Hz(double countsPerSecond) {
-    m_drive.m_bench.masterFrequency_Hz = countsPerSecond;
+    m_drive.m_bench.master.setFrequency_Hz(countsPerSecond);
+}
+
+bool Bds5SimulatorControls::setMasterWave(const MasterWave& wave) {
+    m_drive.m_bench.master.setWave(wave);
+    return true;
 }
 
 // A new motor is a new machine: the drive is powered up again with it, ICONT set from its ratings.
@@ -90,7 +95,8 @@ SimulatorStatus Bds5SimulatorControls::status() const {
     s.current_a = plant.current_A();
     s.loadTorque_Nm = plant.load().externalTorque_Nm;
     s.loadInertia_kgm2 = plant.load().inertia_kgm2;
-    s.masterFrequency_Hz = m_drive.m_bench.masterFrequency_Hz;
+    s.masterFrequency_Hz = m_drive.m_bench.master.frequency_Hz();
+    s.masterWave = m_drive.m_bench.master.wave();
     s.motorName = m_motorName;
     s.feedbackConnected = m_drive.m_bench.feedbackConnected;
     s.relayClosed = m_drive.m_powered; // hardware watchdog OK once powered up (§6.4; no firmware faults)

@@ -1,5 +1,5 @@
 // The bench around a simulated BDS5 (SimulatorControls): I1-I16, the REMOTE (enable), MOTION, HOME and
-// LIMIT lines, the load on the shaft, the master encoder frequency, the resolver wires (ERR 17), the
+// LIMIT lines, the load on the shaft, the master encoder frequency and its wave, the resolver wires (ERR 17), the
 // reference motor and power.
 // Not thread-safe: call it from the thread that steps the drive.
 #pragma once
@@ -23,6 +23,7 @@ public:
     void setLoadTorque_Nm(double torque_Nm) override;
     void setLoadInertia_kgm2(double inertia_kgm2) override;
     void setMasterFrequency_Hz(double countsPerSecond) override;
+    bool setMasterWave(const MasterWave& wave) override;
     bool selectMotor(std::string_view name) override;
     void powerCycle() override;
     SimulatorStatus status() const override;

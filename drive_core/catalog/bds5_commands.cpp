@@ -233,8 +233,13 @@ constexpr std::array kCommands{
                 .manualLines = "L6987-6989, L4343-4358"},
     CommandInfo{.name = "PLAY", .longName = "PLAYBACK", .syntax = "PLAY", .modes = kInteractive,
                 .minEntries = 0, .maxEntries = 0,
+                // The listing's layout is not in the manual; bds5_recorder.h documents the one chosen.
                 .description = "Play back recorded points: prints all the variables recorded by the last "
-                               "RECORD command (ERR 65 if nothing was recorded since power-up). Motion "
+                               "RECORD command (ERR 65 if nothing was recorded since power-up). The first "
+                               "line repeats the set-up: RECORD <n> <t> <v1> [<v2> <v3> <v4>]. Then one line "
+                               "per sampled instant, the first taken when RECORD started and one every t ms "
+                               "after: the values in RECORD order, each an integer in user units "
+                               "right-justified in 12 columns as P prints it. Lines end with CR LF. Motion "
                                "Link's scope formats and plots the data.",
                 .manualLines = "L6991-6993, L6395"},
     CommandInfo{.name = "R", .longName = "REFRESH", .syntax = "R <expr>[format] | \"<text>\" ...",

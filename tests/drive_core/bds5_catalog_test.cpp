@@ -426,3 +426,15 @@ TEST(Bds5CatalogVariables, LimitClassBoundsOfTableE2) {
     EXPECT_EQ(cat::minimumOf(range), 7);
     EXPECT_EQ(cat::maximumOf(range), 9);
 }
+
+// The IDE's help for PLAY is the catalog's description: it must say how to read the listing (the layout
+// bds5_recorder.h chose, checked against the drive in Bds5Record.PlayListsOneLinePerInstantInRecordOrder).
+TEST(Bds5Catalog, PlayHelpDescribesTheListing) {
+    const cat::CommandInfo* play = cat::findCommand("PLAY");
+    ASSERT_NE(play, nullptr);
+    const std::string_view help = play->description;
+    for (const char* phrase :
+         {"RECORD <n> <t> <v1> [<v2> <v3> <v4>]", "one line per sampled instant", "in RECORD order",
+          "integer in user units", "right-justified in 12 columns", "CR LF", "ERR 65"})
+        EXPECT_NE(help.find(phrase), std::string_view::npos) << phrase;
+}

@@ -77,3 +77,72 @@ TEST(Bds5Gearbox, TooFastAMasterIsGearOverflow) { // ERR 97, severity 3 (L7449)
     EXPECT_NE(t.type("\r").find("\aERR 97 GEAR OVERFLOW"), std::string::npos);
     EXPECT_EQ(value(t, "ACTIVE"), "0");
 }
+
+namespace {
+// VCMD in RPM (the power-up velocity units) as the drive holds it now.
+double vcmdRpm(const TestDrive& t) {
+    return t.drive.state().variables.read("VCMD").value_or(-1);
+}
+void runMs(TestDrive& t, int ms) {
+    for (int i = 0; i < ms; ++i) t.drive.step(std::chrono::milliseconds(1));
+    t.drive.takeTransmitted();
+}
+} // namespace
+
+// RAMP (L3033-3042, L5599): run as a velocity loop (PL off), the gearbox's velocity command slews at ACC
+// when it is engaged or the ratio raises the speed, and at DEC when the speed falls.
+TEST(Bds5Gearbox, RampSlewsTheGearedVelocityAtAccAndDec) {
+    TestDrive t;
+    t.type("PLIM OFF\r");
+    t.type("PL OFF\r");
+    t.type("ACC=1000\r"); // RPM/s
+    t.type("DEC=2000\r");
+    t.type("GEARI=1\r");
+    t.type("GEARO=1\r");
+    t.type("RAMP ON\r");
+    t.type("EN\r");
+    t.drive.controls()->setMasterFrequency_Hz(40000); // 40 counts a ms: 585.9 RPM geared 1:1
+    t.type("GEAR ON\r");
+    const double geared = 40000 * 60.0 / 4096;
+    const double v0 = vcmdRpm(t);
+    EXPECT_LT(v0, 100) << "engaging does not jump to the master's speed";
+    runMs(t, 200);
+    EXPECT_NEAR(vcmdRpm(t) - v0, 200, 2) << "1000 RPM/s for 0.2 s";
+    runMs(t, 600);
+    EXPECT_NEAR(vcmdRpm(t), geared, 1) << "and then follows the master";
+    EXPECT_NEAR(t.drive.state().variables.read("VFB").value_or(0), geared, 15) << "the motor with it";
+
+    t.type("GEARO=2\r"); // half the speed: down at DEC
+    const double v1 = vcmdRpm(t);
+    EXPECT_GT(v1, geared / 2 + 100);
+    runMs(t, 50);
+    EXPECT_NEAR(v1 - vcmdRpm(t), 100, 2) << "2000 RPM/s for 50 ms";
+    runMs(t, 200);
+    EXPECT_NEAR(vcmdRpm(t), geared / 2, 1);
+
+    t.type("RAMP OFF\r");
+    t.type("GEARO=1\r");
+    EXPECT_NEAR(vcmdRpm(t), geared, 1) << "without RAMP the command steps at once";
+
+    t.type("RAMP ON\r");
+    t.type("GEAR OFF\r"); // chosen: down to rest at DEC
+    const double v2 = vcmdRpm(t);
+    EXPECT_GT(v2, geared - 60);
+    runMs(t, 100);
+    EXPECT_NEAR(v2 - vcmdRpm(t), 200, 2);
+    runMs(t, 300);
+    EXPECT_EQ(vcmdRpm(t), 0);
+}
+
+TEST(Bds5Gearbox, RampDoesNothingWithThePositionLoopOn) { // "only when PL is off" (L5613)
+    TestDrive t;
+    t.type("PLIM OFF\r");
+    t.type("GEARI=1\r");
+    t.type("GEARO=1\r");
+    t.type("RAMP ON\r");
+    t.type("EN\r");
+    t.drive.controls()->setMasterFrequency_Hz(40000);
+    t.type("GEAR ON\r");
+    EXPECT_NEAR(vcmdRpm(t), 40000 * 60.0 / 4096, 1);
+    t.drive.controls()->setMasterFrequency_Hz(0);
+}

@@ -18,6 +18,21 @@ TEST(Bds5Record, RecordsAJogAndPlaysItBack) { // L6370-6397: RECORD 500 1 VFB th
     EXPECT_TRUE(out.ends_with("\r\n-->"));
 }
 
+// The layout the PLAY help (catalog) describes: the set-up line, then one line per instant with the values
+// in RECORD order, integers in user units right-justified in 12 columns.
+TEST(Bds5Record, PlayListsOneLinePerInstantInRecordOrder) {
+    TestDrive t;
+    t.type("X1=5\r");
+    t.type("X2=-7\r");
+    t.type("PNUM=4096\r"); // degrees
+    t.type("PDEN=360\r");
+    t.type("PFB=90\r");
+    t.type("RECORD 2 1 X2 X1 PFB\r");
+    t.wait(10ms);
+    const std::string row = "          -7           5          90\r\n";
+    EXPECT_EQ(t.type("PLAY\r"), "PLAY\r\nRECORD 2 1 X2 X1 PFB\r\n" + row + row + "-->");
+}
+
 TEST(Bds5Record, LimitsAndErrors) {
     TestDrive t;
     EXPECT_NE(t.type("PLAY\r").find("\aERR 65"), std::string::npos) << "nothing recorded since power-up";

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numbers>
+
 using namespace bds5_test;
 using drive_core::runSimulatorCommand;
 
@@ -61,6 +64,77 @@ TEST(SimulatorCommands, LoadAndMasterInputMoveTheDrivesVariables) {
     EXPECT_NE(run(t, "status").find(" load_inertia_kgm2=0.001 "), std::string::npos);
 }
 
+// A waveform on the master input: the frequency swings about master-hz, the position about its steady
+// course; a whole number of wave periods adds exactly master-hz x time counts.
+TEST(SimulatorCommands, MasterWaveSwingsTheMastersFrequency) {
+    TestDrive t;
+    const auto pext = [&] { return t.drive.state().variables.read("PEXT").value_or(0); };
+    const auto vextCps = [&] { return t.drive.state().variables.read("VEXT").value_or(0); }; // PXNUM/VXNUM 1:
+    const auto runMs = [&](int ms) {
+        for (int i = 0; i < ms; ++i) t.drive.step(1ms);
+        t.drive.takeTransmitted();
+    };
+    t.type("VXNUM=65536\r"); // VEXT in counts per second (basic: 1/65536 count per ms)
+    t.type("VXDEN=1000\r");
+    EXPECT_EQ(run(t, "master-hz 2000"), "OK");
+    EXPECT_EQ(run(t, "master-wave sine 10000 5"), "OK"); // +-10 kHz, 5 times a second
+    EXPECT_NE(run(t, "status").find(" master_hz=2000 "), std::string::npos);
+    EXPECT_NE(run(t, "status").find(" master_wave=sine:10000:5"), std::string::npos);
+    const int p0 = pext();
+    runMs(50); // a quarter period: the frequency at its crest
+    EXPECT_NEAR(vextCps(), 12000, 10);
+    // The counts so far: 2000 x 0.05 + 10000 (1 - cos(pi/2)) / (2 pi 5).
+    EXPECT_NEAR(pext() - p0, 100 + 10000 / (10 * std::numbers::pi), 1);
+    runMs(100); // three quarters: the trough, running backwards
+    EXPECT_NEAR(vextCps(), -8000, 10);
+    runMs(50); // one whole period: only the steady part is left, to the count
+    EXPECT_EQ(pext() - p0, 400);
+    runMs(800); // five periods
+    EXPECT_EQ(pext() - p0, 2000);
+
+    EXPECT_EQ(run(t, "master-wave square 3000 10"), "OK"); // +3 kHz for 50 ms, then -3 kHz
+    runMs(20);
+    EXPECT_NEAR(vextCps(), 5000, 1);
+    runMs(50);
+    EXPECT_NEAR(vextCps(), -1000, 1);
+    EXPECT_EQ(run(t, "master-wave triangle 3000 10"), "OK");
+    runMs(25); // the triangle's crest
+    EXPECT_NEAR(vextCps(), 5000, 150);
+    EXPECT_EQ(run(t, "master-wave off"), "OK");
+    EXPECT_NE(run(t, "status").find(" master_wave=off"), std::string::npos);
+    const int p1 = pext();
+    runMs(100);
+    EXPECT_EQ(pext() - p1, 200);
+    EXPECT_EQ(vextCps(), 2000);
+}
+
+// The wave drives the electronic gearbox like any master: a sine master makes the slave oscillate.
+TEST(SimulatorCommands, ASineMasterSwingsTheGearedMotor) {
+    TestDrive t;
+    t.type("PLIM OFF\r");
+    t.type("GEARI=1\r");
+    t.type("GEARO=1\r");
+    t.type("EN\r");
+    t.type("GEAR ON\r");
+    EXPECT_EQ(run(t, "master-wave sine 20000 2"), "OK"); // 20 kHz peak: the shaft swings 1592 counts
+    const auto read = [&](const char* name) { return double(t.drive.state().variables.read(name).value_or(0)); };
+    double low = 1e9, high = -1e9, pfbLow = 1e9, pfbHigh = -1e9;
+    for (int ms = 0; ms < 1000; ++ms) {
+        t.drive.step(1ms);
+        low = std::min(low, read("PCMD"));
+        high = std::max(high, read("PCMD"));
+        if (ms > 500) { // the motor, once the loop has settled into the swing
+            pfbLow = std::min(pfbLow, read("PFB"));
+            pfbHigh = std::max(pfbHigh, read("PFB"));
+        }
+    }
+    t.drive.takeTransmitted();
+    const double swing = 20000 / (std::numbers::pi * 2); // peak to peak 2 A / (2 pi f)
+    EXPECT_NEAR(high - low, swing, 2);
+    EXPECT_NEAR(low, 0, 1) << "from its start the sine master only runs forward first";
+    EXPECT_NEAR(pfbHigh - pfbLow, swing, 0.05 * swing) << "the motor follows";
+}
+
 TEST(SimulatorCommands, MotorAndPowerCycle) {
     TestDrive t;
     EXPECT_EQ(run(t, "motor REF-LARGE"), "OK");
@@ -94,5 +168,9 @@ TEST(SimulatorCommands, MalformedLinesAnswerError) {
     EXPECT_EQ(run(t, "enable"), "ERROR wrong number of arguments for enable");
     EXPECT_EQ(run(t, "load-torque heavy"), "ERROR expected a number");
     EXPECT_EQ(run(t, "load-inertia -1"), "ERROR inertia must not be negative");
+    EXPECT_EQ(run(t, "master-wave saw 1 1"), "ERROR expected sine, square or triangle");
+    EXPECT_EQ(run(t, "master-wave sine 1000 0"), "ERROR wave frequency must be above 0");
+    EXPECT_EQ(run(t, "master-wave sine 1000"), "ERROR wrong number of arguments for master-wave");
+    EXPECT_EQ(run(t, "master-wave on"), "ERROR expected master-wave off or a shape, amplitude and frequency");
     EXPECT_EQ(value(t, "I1"), "0");
 }
