@@ -180,7 +180,10 @@ QString Pmc960Workspace::statusText() const {
 void Pmc960Workspace::stop() {
     if (!m_connected) return;
     if (m_transfer->isBusy() && m_transfer->progressDialog()) {
-        m_transfer->progressDialog()->cancel(); // the download leaves the editor and protects the buffer
+        // ESC goes out now; the download leaves the editor and protects the buffer. (QProgressDialog::cancel()
+        // would only hide the dialog: it does not emit canceled().)
+        m_transfer->cancelDownload();
+        emit message(tr("Stop: ESC sent to the PMC-960; the download is cancelled"));
         return;
     }
     m_session->cancelPending();

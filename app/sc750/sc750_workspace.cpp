@@ -259,7 +259,8 @@ void Sc750Workspace::updateActions() {
     action(QStringLiteral("Clear All Breakpoints"))->setEnabled(m_shown);
     action(QStringLiteral("Output Window"))->setEnabled(m_shown);
     action(QStringLiteral("Variables"))->setEnabled(m_shown);
-    action(QStringLiteral("Stop Program"))->setEnabled(on && state == State::Running);
+    // During a download too: Ctrl C stops motion and the download (no frame goes out after it).
+    action(QStringLiteral("Stop Program"))->setEnabled(on && (state == State::Running || state == State::Downloading));
     action(QStringLiteral("Continue Program"))->setEnabled(on && (state == State::Stopped || state == State::AtBreakpoint));
     action(QStringLiteral("Real Time Function Call"))->setEnabled(idle);
     for (QAction* a : m_optionsMenu->actions()) a->setEnabled(m_shown);
