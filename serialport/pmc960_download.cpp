@@ -1,14 +1,14 @@
 // The PMC-960 program download with checksum verification.
 #include "pmc960_download.h"
 
+// Every request's time-out is the session's, derived from the baud rate and the command's time
+// (Pmc960Timing): these commands and a line's echo take the controller milliseconds, so a lost answer is
+// noticed within a few hundred ms at 9600 baud and the next attempt follows close behind.
 namespace serialport {
 
 namespace {
 constexpr char kEsc = 0x1B;
 constexpr int kBufferFull = 0xC1; // #C1: the program does not fit; another attempt will not change that
-// These commands and a line's echo take the controller milliseconds (40 characters at 9600 baud: 42 ms);
-// a second is a lost answer, and a short wait keeps the next attempt close.
-constexpr int kAnswerMs = 1000;
 constexpr int kPromptBackMs = 10000;
 } // namespace
 
@@ -92,7 +92,7 @@ void Pmc960Download::cancel() {
     m_waiting = 0; // what is in flight is abandoned, not waited for
     m_step = Step::Cancelling;
     m_session.resynchronise(QByteArray(1, kEsc)); // ESC + CR now
-    m_waiting = m_session.send("SW0\r", kAnswerMs); // write-protect again once the prompt is back
+    m_waiting = m_session.send("SW0\r");          // write-protect again once the prompt is back
     m_noPrompt.start();
 }
 
@@ -147,19 +147,19 @@ void Pmc960Download::next() {
         m_step = Step::Leave;
     }
     switch (m_step) {
-    case Step::Enable: m_waiting = m_session.send("SW1\r", kAnswerMs); return;
-    case Step::Erase: m_waiting = m_session.send("P{}", kAnswerMs); return; // } in column 1 erases to the end (L930)
-    case Step::Enter: m_waiting = m_session.sendExpecting("P\r", "P", kAnswerMs); return;
+    case Step::Enable: m_waiting = m_session.send("SW1\r"); return;
+    case Step::Erase: m_waiting = m_session.send("P{}"); return; // } in column 1 erases to the end (L930)
+    case Step::Enter: m_waiting = m_session.sendExpecting("P\r", "P"); return;
     case Step::Lines:
         if (m_line < m_lines.size()) {
             const QByteArray line = m_lines.at(m_line).toLatin1();
-            m_waiting = m_session.sendExpecting(line + '\r', line + "\r\n", kAnswerMs);
+            m_waiting = m_session.sendExpecting(line + '\r', line + "\r\n");
             return;
         }
         m_step = Step::Leave;
         [[fallthrough]];
-    case Step::Leave: m_waiting = m_session.send("\x1b", kAnswerMs); return;
-    case Step::Protect: m_waiting = m_session.send("SW0\r", kAnswerMs); return;
+    case Step::Leave: m_waiting = m_session.send("\x1b"); return;
+    case Step::Protect: m_waiting = m_session.send("SW0\r"); return;
     case Step::Verify:
         if (m_result.cancelled) return finish(false, QStringLiteral("cancelled"));
         m_waiting = m_session.poll('h');

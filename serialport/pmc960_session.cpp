@@ -1,6 +1,8 @@
 // The PMC-960 session state machine.
 #include "pmc960_session.h"
 
+#include "pmc960_timing.h"
+
 #include "drive_core/catalog/pmc960_catalog.h"
 
 #include <QRegularExpression>
@@ -61,7 +63,6 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         r.id = m_nextId++;
         r.kind = Kind::Poll;
         r.bytes = QByteArray(1, m_statusLetters.at(m_statusIndex++ % m_statusLetters.size()));
-        r.timeoutMs = 1000;
         r.status = true;
         m_queue.push_back(r);
         pump();
@@ -191,7 +192,7 @@ void Pmc960Session::pump() {
         write(m_current->bytes, true);
         setState(State::Busy);
     }
-    m_timeout.start(m_current->timeoutMs);
+    m_timeout.start(timeoutMsFor(*m_current));
     if (m_current->kind == Kind::Expect && m_current->expect.isEmpty()) complete();
 }
 
@@ -331,14 +332,26 @@ void Pmc960Session::complete() {
     pump();
 }
 
+int Pmc960Session::timeoutMsFor(const Request& request) const {
+    if (request.timeoutMs > 0) return request.timeoutMs;
+    const int baud = m_link.baudRate();
+    switch (request.kind) {
+    case Kind::Command: return Pmc960Timing::commandTimeoutMs(request.bytes, baud);
+    case Kind::Poll: return Pmc960Timing::pollTimeoutMs(baud);
+    case Kind::Expect: return Pmc960Timing::expectTimeoutMs(request.bytes, request.expect, baud);
+    }
+    return Pmc960Timing::kCommandMs;
+}
+
 void Pmc960Session::onTimeout() {
     if (!m_current) return;
+    const int waitedMs = timeoutMsFor(*m_current);
     const quint64 id = m_current->id;
     m_current.reset();
     setState(State::WaitingForPrompt); // ask for a prompt until one comes
     askForPrompt();
     m_wake.start();
-    emit failed(id, QStringLiteral("no answer in time"));
+    emit failed(id, QStringLiteral("no answer within %1 ms").arg(waitedMs));
 }
 
 } // namespace serialport

@@ -1,7 +1,9 @@
 // Pmc960Session and Pmc960Download over SimulatorLink (the simulated PMC-960): prompt handling, #xx
 // decoding, polls between commands, and a download verified by the communications checksum.
+#include "serialport/fault_link.h"
 #include "serialport/pmc960_download.h"
 #include "serialport/pmc960_session.h"
+#include "serialport/pmc960_timing.h"
 #include "serialport/pmc960_upload.h"
 #include "serialport/simulator_link.h"
 
@@ -193,6 +195,26 @@ private slots:
         QVERIFY(result.cancelled);
         QCOMPARE(run(f.session, "SW?").value, QStringLiteral("0"));
         QCOMPARE(run(f.session, "A?").value, QStringLiteral("4000")); // at the command prompt again
+    }
+
+    // A lost answer is reported after the time-out derived from the link's baud rate and the command
+    // (Pmc960Timing), which the message names: longer on a slower line.
+    void aLostAnswerTimesOutByTheBaudRate() {
+        for (const int baud : {9600, 1200}) {
+            SimulatorLink inner{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, baud, false}};
+            FaultLink link(inner, 1, {}, {});
+            Pmc960Session session(link);
+            link.open();
+            QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 5000);
+            link.setFaults({.drop = 1.0}, {}); // nothing reaches the controller any more
+            QSignalSpy failed(&session, &Pmc960Session::failed);
+            const quint64 id = session.send("A?");
+            QVERIFY(failed.wait(10000));
+            QCOMPARE(failed.first().at(0).value<quint64>(), id);
+            const int expected = Pmc960Timing::commandTimeoutMs("A?", baud);
+            QCOMPARE(failed.first().at(1).toString(), QStringLiteral("no answer within %1 ms").arg(expected));
+            QCOMPARE(session.state(), Pmc960Session::State::WaitingForPrompt); // asking for a prompt again
+        }
     }
 
     void downloadStopsOnABufferFull() {
