@@ -47,7 +47,8 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         pump();
     });
     m_settle.setSingleShot(true);
-    m_settle.setInterval(std::max(20, m_link.quietMs() * 4));
+    // A link that delivers whole (quietMs 0: in-process, the fuzzer's) needs no settling time.
+    m_settle.setInterval(m_link.quietMs() > 0 ? std::max(20, m_link.quietMs() * 4) : 0);
     connect(&m_settle, &QTimer::timeout, this, [this] {
         if (m_state != State::WaitingForPrompt || !endsInPrompt()) return;
         m_buffer.clear();
