@@ -250,6 +250,9 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
         emit asyncError(code, errorText(code));
     }
     if (m_state == State::WaitingForPrompt) { // more prompts may follow (each CR asked for one)
+        // Its errors are reported: only the prompt stays (for the settle check), so the next prompt does not
+        // report them again.
+        m_buffer = m_buffer.right(4);
         m_settle.start();
         return;
     }

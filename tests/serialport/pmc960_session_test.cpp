@@ -12,6 +12,29 @@
 
 using namespace serialport;
 
+namespace {
+// The controller's side played by the test: writes vanish, bytes arrive when delivered.
+class ScriptLink final : public Link {
+public:
+    void open() override {
+        m_open = true;
+        emit opened();
+    }
+    void close() override {
+        m_open = false;
+        emit closed();
+    }
+    bool isOpen() const override { return m_open; }
+    void write(const QByteArray&) override {}
+    QString description() const override { return QStringLiteral("script"); }
+    int baudRate() const override { return 9600; }
+    void deliver(const QByteArray& bytes) { emit bytesReceived(bytes); }
+
+private:
+    bool m_open = false;
+};
+} // namespace
+
 class Pmc960SessionTest : public QObject {
     Q_OBJECT
 
@@ -228,6 +251,22 @@ private slots:
         const auto result = done.at(0).at(0).value<Pmc960DownloadResult>();
         QVERIFY(!result.ok);
         QCOMPARE(result.error, 0xC1);
+    }
+
+    // Regression (host_parsers_fuzz, corpus/host/crash-pmc960-async-twice): while the session waits for the
+    // line to settle, every further prompt rescanned the whole buffer and an #E0 ahead of the first prompt
+    // was logged again for each prompt that followed (ESC and CR each prompt after a resynchronisation).
+    void anAsynchronousErrorIsReportedOnceWhilePromptsFollow() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        QSignalSpy errors(&session, &Pmc960Session::asyncError);
+        link.open();
+        link.deliver("#E0\r\n=}");
+        link.deliver("\r\n=}");
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QCOMPARE(errors.count(), 1);
+        QCOMPARE(errors.at(0).at(0).toInt(), 0xE0);
     }
 };
 
