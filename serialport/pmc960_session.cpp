@@ -15,6 +15,13 @@ namespace serialport {
 namespace {
 constexpr char kAttention = 0x1D;
 constexpr int kWakeAfterMs = 300; // no prompt yet: send a CR (answers autobaud too, L1806-1826)
+
+// The controller's error codes: # and two hex digits with the high bit set (0x80..0xE3 in the catalog).
+// "#00" from a damaged line is text, not error 0 with a message.
+const QRegularExpression& errorCodePattern() {
+    static const QRegularExpression kPattern(QStringLiteral("#([89A-F][0-9A-F])"));
+    return kPattern;
+}
 } // namespace
 
 Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
@@ -244,8 +251,7 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
     }
     if (!endsInPrompt()) return;
     learnAxisId(m_buffer.at(m_buffer.size() - 2));
-    static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
-    for (auto it = kError.globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
+    for (auto it = errorCodePattern().globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
         const int code = it.next().captured(1).toInt(nullptr, 16);
         emit asyncError(code, errorText(code));
     }
@@ -282,13 +288,12 @@ Pmc960Response Pmc960Session::parse(const Request& request) const {
     echo.replace("\r", "");
     if (text.startsWith(echo)) text.remove(0, echo.size());
     r.text = text;
-    static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
     QString value = QString::fromLatin1(text);
-    const auto match = kError.match(value);
+    const auto match = errorCodePattern().match(value);
     if (match.hasMatch()) {
         r.error = match.captured(1).toInt(nullptr, 16);
         r.errorText = errorText(r.error);
-        value.remove(kError);
+        value.remove(errorCodePattern());
     }
     r.value = value.trimmed();
     return r;

@@ -268,6 +268,29 @@ private slots:
         QCOMPARE(errors.count(), 1);
         QCOMPARE(errors.at(0).at(0).toInt(), 0xE0);
     }
+
+    // Regression (host_parsers_fuzz, corpus/host/crash-pmc960-hash-00): "#00" on a damaged line decoded as
+    // error 0 with the text "unknown error", and vanished from the value. Only #80..#FF are the controller's.
+    void aHashWithoutTheHighBitIsNotAnErrorCode() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        link.open();
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QSignalSpy finished(&session, &Pmc960Session::finished);
+        session.send("A?");
+        link.deliver("A?#00\r\n=}");
+        session.send("I100+");
+        link.deliver("I100+#B6\r\n=}");
+        QCOMPARE(finished.count(), 2);
+        const auto damaged = finished.at(0).at(1).value<Pmc960Response>();
+        QCOMPARE(damaged.error, 0);
+        QCOMPARE(damaged.errorText, QString());
+        QCOMPARE(damaged.value, QStringLiteral("#00"));
+        const auto refused = finished.at(1).at(1).value<Pmc960Response>();
+        QCOMPARE(refused.error, 0xB6);
+        QCOMPARE(refused.errorText, QStringLiteral("Servodrive not enabled"));
+    }
 };
 
 QTEST_GUILESS_MAIN(Pmc960SessionTest)
