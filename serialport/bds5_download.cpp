@@ -17,7 +17,13 @@ bool isLoadPrompt(const QString& prompt) {
 
 Bds5Download::Bds5Download(Bds5Session& session, const QString& programText, Options options, QObject* parent)
     : Bds5Transfer(session, parent), m_program(Bds5ProgramText::prepare(programText, options.stripComments)),
-      m_options(std::move(options)) {}
+      m_options(std::move(options)) {
+    connect(&session, &Bds5Session::stopSent, this, [this] {
+        if (!isRunning() || isCancelling()) return;
+        m_stopped = true;
+        cancel();
+    });
+}
 
 void Bds5Download::begin() {
     m_result = {};
@@ -176,8 +182,11 @@ void Bds5Download::afterLeaving(const Bds5Response&) {
     }
     if (isCancelling()) {
         m_result.status = Bds5TransferResult::Status::Cancelled;
-        m_result.summary =
-            tr("Download cancelled after %1 of %2 lines. %3").arg(m_sent).arg(total).arg(heldText());
+        m_result.summary = (m_stopped ? tr("Stopped (^X): download cancelled after %1 of %2 lines. %3")
+                                      : tr("Download cancelled after %1 of %2 lines. %3"))
+                               .arg(m_sent)
+                               .arg(total)
+                               .arg(heldText());
         return finish(m_result);
     }
     if (!m_options.verify) {

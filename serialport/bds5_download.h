@@ -1,7 +1,8 @@
 // Bds5Download: Program > Download to Drive. `>BDS [password]`, each line at its l-> prompt, Esc, then
 // (optionally) verify: read back with <BDS, compare line by line, record P CHECKSUM (L5356-5394,
 // L9953-9984). Refuses on ERR 110 (editor password) and stops on ERR 86 (program full); cancel ends the
-// load with Esc at the next prompt. The result says what the drive holds afterwards.
+// load with Esc at the next prompt, and so does a ^X (Stop Motion) the user sends meanwhile: no program
+// line goes out after a stop. The result says what the drive holds afterwards.
 #pragma once
 
 #include "bds5_program_text.h"
@@ -54,6 +55,7 @@ private:
     Step m_step = Step::Entering;
     int m_sent = 0; // lines the drive has acknowledged with l->
     Bds5TransferResult m_result;
+    bool m_stopped = false; // cancelled by the user's ^X (Bds5Session::stopSent)
     bool m_full = false;    // ERR 86: the drive's memory is full
     QString m_leftLoadMode; // the prompt that replaced l-> (the drive left load mode on its own)
     Bds5Verify* m_verify = nullptr;

@@ -67,6 +67,7 @@ void Bds5Session::sendUrgent(const QByteArray& bytes) {
     // With a command in flight its response still ends at the drive's next prompt; nothing else changes.
     if (m_current) write(bytes);
     else passRaw(bytes);
+    if (bytes.contains('\x18')) emit stopSent();
 }
 
 void Bds5Session::passRaw(const QByteArray& bytes) {

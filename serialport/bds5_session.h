@@ -67,6 +67,8 @@ signals:
     void stateChanged(serialport::Bds5Session::State state);
     void finished(quint64 id, const serialport::Bds5Response& response);
     void failed(quint64 id, const QString& reason);
+    // sendUrgent() wrote a ^X (Stop Motion): a download in progress stops too (Bds5Download).
+    void stopSent();
 
 private:
     struct Pending {

@@ -1,14 +1,14 @@
 // The PMC-960 program download with checksum verification.
 #include "pmc960_download.h"
 
+// Every request's time-out is the session's, derived from the baud rate and the command's time
+// (Pmc960Timing): these commands and a line's echo take the controller milliseconds, so a lost answer is
+// noticed within a few hundred ms at 9600 baud and the next attempt follows close behind.
 namespace serialport {
 
 namespace {
 constexpr char kEsc = 0x1B;
 constexpr int kBufferFull = 0xC1; // #C1: the program does not fit; another attempt will not change that
-// These commands and a line's echo take the controller milliseconds (40 characters at 9600 baud: 42 ms);
-// a second is a lost answer, and a short wait keeps the next attempt close.
-constexpr int kAnswerMs = 1000;
 constexpr int kPromptBackMs = 10000;
 } // namespace
 
@@ -22,6 +22,10 @@ Pmc960Download::Pmc960Download(Pmc960Session& session, const QString& programTex
     m_noPrompt.setInterval(kPromptBackMs);
     connect(&m_noPrompt, &QTimer::timeout, this, [this] {
         if (m_step == Step::Done) return;
+        if (m_step == Step::Cancelling) {
+            m_session.cancelPending();
+            return finish(false, m_cancelReason + QStringLiteral("; no prompt came back after ESC"));
+        }
         finish(false, QStringLiteral("no prompt from the controller %1 s after ESC (attempt %2): it does not answer, "
                                      "or answers another axis ID; the program buffer holds part of the program at most")
                           .arg(kPromptBackMs / 1000)
@@ -77,7 +81,19 @@ void Pmc960Download::attemptFailed(const QString& reason, int error) {
 }
 
 void Pmc960Download::cancel() {
+    if (m_cancelled || m_step == Step::Done) return;
     m_cancelled = true;
+    if (m_attempt == 0) return;                                                  // not started
+    const int sent = m_line + (m_step == Step::Lines && m_waiting != 0 ? 1 : 0); // a line in flight may be stored
+    m_result.cancelled = true;
+    m_cancelReason = QStringLiteral("cancelled (ESC) with %1 of %2 lines sent; the program buffer holds at most those")
+                         .arg(sent)
+                         .arg(m_lines.size());
+    m_waiting = 0; // what is in flight is abandoned, not waited for
+    m_step = Step::Cancelling;
+    m_session.resynchronise(QByteArray(1, kEsc)); // ESC + CR now
+    m_waiting = m_session.send("SW0\r");          // write-protect again once the prompt is back
+    m_noPrompt.start();
 }
 
 void Pmc960Download::onPoll(quint64 id, char, const QString& value) {
@@ -101,6 +117,7 @@ void Pmc960Download::onPoll(quint64 id, char, const QString& value) {
 
 void Pmc960Download::onFinished(quint64 id, const Pmc960Response& response) {
     if (id != m_waiting || m_step == Step::Done) return;
+    if (m_step == Step::Cancelling) return finish(false, m_cancelReason);
     if (response.error != 0) return attemptFailed(response.errorText, response.error);
     switch (m_step) {
     case Step::Enable: m_step = Step::Erase; break;
@@ -119,6 +136,8 @@ void Pmc960Download::onFinished(quint64 id, const Pmc960Response& response) {
 
 void Pmc960Download::onFailed(quint64 id, const QString& reason) {
     if (id != m_waiting || m_step == Step::Done) return;
+    if (m_step == Step::Cancelling)
+        return finish(false, m_cancelReason + QStringLiteral("; SW0 not confirmed: ") + reason);
     attemptFailed(reason);
 }
 
@@ -128,19 +147,19 @@ void Pmc960Download::next() {
         m_step = Step::Leave;
     }
     switch (m_step) {
-    case Step::Enable: m_waiting = m_session.send("SW1\r", kAnswerMs); return;
-    case Step::Erase: m_waiting = m_session.send("P{}", kAnswerMs); return; // } in column 1 erases to the end (L930)
-    case Step::Enter: m_waiting = m_session.sendExpecting("P\r", "P", kAnswerMs); return;
+    case Step::Enable: m_waiting = m_session.send("SW1\r"); return;
+    case Step::Erase: m_waiting = m_session.send("P{}"); return; // } in column 1 erases to the end (L930)
+    case Step::Enter: m_waiting = m_session.sendExpecting("P\r", "P"); return;
     case Step::Lines:
         if (m_line < m_lines.size()) {
             const QByteArray line = m_lines.at(m_line).toLatin1();
-            m_waiting = m_session.sendExpecting(line + '\r', line + "\r\n", kAnswerMs);
+            m_waiting = m_session.sendExpecting(line + '\r', line + "\r\n");
             return;
         }
         m_step = Step::Leave;
         [[fallthrough]];
-    case Step::Leave: m_waiting = m_session.send("\x1b", kAnswerMs); return;
-    case Step::Protect: m_waiting = m_session.send("SW0\r", kAnswerMs); return;
+    case Step::Leave: m_waiting = m_session.send("\x1b"); return;
+    case Step::Protect: m_waiting = m_session.send("SW0\r"); return;
     case Step::Verify:
         if (m_result.cancelled) return finish(false, QStringLiteral("cancelled"));
         m_waiting = m_session.poll('h');

@@ -1,7 +1,8 @@
 // Pmc960Download: Program > Download to the PMC-960's program buffer, verified by the communications
 // checksum: <attn>h (reset), SW1, P{} (erase), P<cr> (append), the text line by line (spaces dropped, CR
 // endings, each line's echo awaited), ESC, SW0, <attn>h — whose answer must equal the sum of every byte
-// written since the first poll (digest §4.8, §4.12). Progress per line; cancel leaves the editor with ESC.
+// written since the first poll (digest §4.8, §4.12). Progress per line; cancel (the user's Stop) writes ESC
+// at once, ahead of anything queued, leaves the editor and write-protects the buffer again.
 // Over a damaged wire: a line whose echo differs, a command answered with an error or not at all, or a
 // checksum that differs ends the attempt; the session gets back to the prompt (ESC out of the editor) and
 // the whole download starts again, erasing first, up to kMaxAttempts times. A failure says what the buffer
@@ -31,6 +32,8 @@ public:
     Pmc960Download(Pmc960Session& session, const QString& programText, QObject* parent = nullptr);
 
     void start();
+    // ESC + CR go out now (Pmc960Session::resynchronise), SW0 follows at the prompt; done() then reports
+    // the download cancelled.
     void cancel();
     static constexpr int kMaxAttempts = 8; // whole attempts before giving up (a clean wire needs one)
     // The lines sent, as the controller stores them (no spaces, no empty lines).
@@ -42,7 +45,7 @@ signals:
     void done(const serialport::Pmc960DownloadResult& result);
 
 private:
-    enum class Step { ResetChecksum, Enable, Erase, Enter, Lines, Leave, Protect, Verify, Done };
+    enum class Step { ResetChecksum, Enable, Erase, Enter, Lines, Leave, Protect, Verify, Cancelling, Done };
 
     void onFinished(quint64 id, const Pmc960Response& response);
     void onPoll(quint64 id, char letter, const QString& value);
@@ -61,6 +64,7 @@ private:
     quint64 m_waiting = 0;
     bool m_cancelled = false;
     Pmc960DownloadResult m_result;
+    QString m_cancelReason;
 };
 
 } // namespace serialport

@@ -1,6 +1,8 @@
 // The PMC-960 session state machine.
 #include "pmc960_session.h"
 
+#include "pmc960_timing.h"
+
 #include "drive_core/catalog/pmc960_catalog.h"
 
 #include <QRegularExpression>
@@ -13,6 +15,13 @@ namespace serialport {
 namespace {
 constexpr char kAttention = 0x1D;
 constexpr int kWakeAfterMs = 300; // no prompt yet: send a CR (answers autobaud too, L1806-1826)
+
+// The controller's error codes: # and two hex digits with the high bit set (0x80..0xE3 in the catalog).
+// "#00" from a damaged line is text, not error 0 with a message.
+const QRegularExpression& errorCodePattern() {
+    static const QRegularExpression kPattern(QStringLiteral("#([89A-F][0-9A-F])"));
+    return kPattern;
+}
 } // namespace
 
 Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
@@ -45,7 +54,8 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         pump();
     });
     m_settle.setSingleShot(true);
-    m_settle.setInterval(std::max(20, m_link.quietMs() * 4));
+    // A link that delivers whole (quietMs 0: in-process, the fuzzer's) needs no settling time.
+    m_settle.setInterval(m_link.quietMs() > 0 ? std::max(20, m_link.quietMs() * 4) : 0);
     connect(&m_settle, &QTimer::timeout, this, [this] {
         if (m_state != State::WaitingForPrompt || !endsInPrompt()) return;
         m_buffer.clear();
@@ -61,7 +71,6 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         r.id = m_nextId++;
         r.kind = Kind::Poll;
         r.bytes = QByteArray(1, m_statusLetters.at(m_statusIndex++ % m_statusLetters.size()));
-        r.timeoutMs = 1000;
         r.status = true;
         m_queue.push_back(r);
         pump();
@@ -191,7 +200,7 @@ void Pmc960Session::pump() {
         write(m_current->bytes, true);
         setState(State::Busy);
     }
-    m_timeout.start(m_current->timeoutMs);
+    m_timeout.start(timeoutMsFor(*m_current));
     if (m_current->kind == Kind::Expect && m_current->expect.isEmpty()) complete();
 }
 
@@ -242,12 +251,14 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
     }
     if (!endsInPrompt()) return;
     learnAxisId(m_buffer.at(m_buffer.size() - 2));
-    static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
-    for (auto it = kError.globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
+    for (auto it = errorCodePattern().globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
         const int code = it.next().captured(1).toInt(nullptr, 16);
         emit asyncError(code, errorText(code));
     }
     if (m_state == State::WaitingForPrompt) { // more prompts may follow (each CR asked for one)
+        // Its errors are reported: only the prompt stays (for the settle check), so the next prompt does not
+        // report them again.
+        m_buffer = m_buffer.right(4);
         m_settle.start();
         return;
     }
@@ -277,13 +288,12 @@ Pmc960Response Pmc960Session::parse(const Request& request) const {
     echo.replace("\r", "");
     if (text.startsWith(echo)) text.remove(0, echo.size());
     r.text = text;
-    static const QRegularExpression kError(QStringLiteral("#([0-9A-F]{2})"));
     QString value = QString::fromLatin1(text);
-    const auto match = kError.match(value);
+    const auto match = errorCodePattern().match(value);
     if (match.hasMatch()) {
         r.error = match.captured(1).toInt(nullptr, 16);
         r.errorText = errorText(r.error);
-        value.remove(kError);
+        value.remove(errorCodePattern());
     }
     r.value = value.trimmed();
     return r;
@@ -331,14 +341,26 @@ void Pmc960Session::complete() {
     pump();
 }
 
+int Pmc960Session::timeoutMsFor(const Request& request) const {
+    if (request.timeoutMs > 0) return request.timeoutMs;
+    const int baud = m_link.baudRate();
+    switch (request.kind) {
+    case Kind::Command: return Pmc960Timing::commandTimeoutMs(request.bytes, baud);
+    case Kind::Poll: return Pmc960Timing::pollTimeoutMs(baud);
+    case Kind::Expect: return Pmc960Timing::expectTimeoutMs(request.bytes, request.expect, baud);
+    }
+    return Pmc960Timing::kCommandMs;
+}
+
 void Pmc960Session::onTimeout() {
     if (!m_current) return;
+    const int waitedMs = timeoutMsFor(*m_current);
     const quint64 id = m_current->id;
     m_current.reset();
     setState(State::WaitingForPrompt); // ask for a prompt until one comes
     askForPrompt();
     m_wake.start();
-    emit failed(id, QStringLiteral("no answer in time"));
+    emit failed(id, QStringLiteral("no answer within %1 ms").arg(waitedMs));
 }
 
 } // namespace serialport

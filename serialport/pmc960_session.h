@@ -34,13 +34,14 @@ public:
     explicit Pmc960Session(Link& link, QObject* parent = nullptr);
 
     // Queues bytes that end in a prompt: "A3500\r", "A?" (a display character ends the command), "P{}".
-    // timeoutMs: how long the prompt may take. Returns an id that finished()/failed() carry.
-    quint64 send(const QByteArray& command, int timeoutMs = 3000);
+    // timeoutMs: how long the prompt may take, counted from the write; 0 derives it from the link's baud
+    // rate and the command's time (Pmc960Timing). Returns an id that finished()/failed() carry.
+    quint64 send(const QByteArray& command, int timeoutMs = 0);
     // Queues a status poll; pollAnswered(id, letter, value) carries the reply (decimal or hex output).
-    quint64 poll(char letter, int timeoutMs = 1000);
+    quint64 poll(char letter, int timeoutMs = 0);
     // Queues bytes that produce no prompt (program text in the P editor): written in turn, finished()
     // follows once `expect` has arrived (the editor's echo), or at once if expect is empty.
-    quint64 sendExpecting(const QByteArray& bytes, const QByteArray& expect, int timeoutMs = 3000);
+    quint64 sendExpecting(const QByteArray& bytes, const QByteArray& expect, int timeoutMs = 0);
     // Bytes typed in the terminal, written as they are (in the checksum) once no request is in flight. From
     // the first typed byte until the controller's next prompt the line is the user's: queued requests and
     // status polls wait, so neither the user's command nor ours is cut in two.
@@ -82,7 +83,7 @@ private:
         Kind kind = Kind::Command;
         QByteArray bytes;
         QByteArray expect;
-        int timeoutMs = 3000;
+        int timeoutMs = 0;   // 0: derived (Pmc960Timing)
         bool status = false; // from the status timer
     };
 
@@ -98,6 +99,7 @@ private:
     bool endsInPrompt() const;
     void dropPromptsBeforePollAnswer();
     Pmc960Response parse(const Request& request) const;
+    int timeoutMsFor(const Request& request) const;
 
     Link& m_link;
     State m_state = State::Closed;

@@ -31,6 +31,10 @@ Sc750Download::Sc750Download(Sc750Session& session, std::vector<std::uint8_t> bi
     : QObject(parent), m_session(session), m_bin(std::move(bin)) {
     connect(&m_session, &Sc750Session::finished, this, &Sc750Download::onFinished);
     connect(&m_session, &Sc750Session::failed, this, &Sc750Download::onFailed);
+    connect(&m_session, &Sc750Session::stopSent, this, [this] {
+        m_stopped = !m_cancelled;
+        m_cancelled = true;
+    });
 }
 
 void Sc750Download::start() {
@@ -43,6 +47,12 @@ void Sc750Download::cancel() {
 }
 
 void Sc750Download::sendStep() {
+    if (m_cancelled)
+        return finish(false, QStringLiteral("%1 at byte %2 of %3; %4")
+                                 .arg(m_stopped ? QStringLiteral("stopped (Ctrl C)") : QStringLiteral("cancelled"))
+                                 .arg(m_offset)
+                                 .arg(m_bin.size())
+                                 .arg(heldProgram()));
     switch (m_step) {
     case Step::Identify: m_waiting = m_session.send('V', {}, true); return;
     case Step::Begin: {
@@ -51,7 +61,6 @@ void Sc750Download::sendStep() {
         return;
     }
     case Step::Write: {
-        if (m_cancelled) return finish(false, QStringLiteral("cancelled"));
         if (m_offset >= m_bin.size()) {
             m_step = Step::End;
             return sendStep();

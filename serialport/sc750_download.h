@@ -24,7 +24,9 @@ public:
     Sc750Download(Sc750Session& session, std::vector<std::uint8_t> bin, QObject* parent = nullptr);
 
     void start();
-    void cancel(); // takes effect at the next acknowledgement; the drive keeps its old program
+    // Takes effect at the next acknowledgement: no further frame goes out, and the drive keeps its old
+    // program. A Ctrl C sent meanwhile (Sc750Session::sendStop, Stop Program) cancels too.
+    void cancel();
 
     static constexpr int kMaxFailuresInARow = 12; // lost or damaged frames in a row before giving up
     static constexpr int kMaxRestarts = 3;        // fresh starts from D when the transfer no longer adds up
@@ -54,6 +56,7 @@ private:
     bool m_endSent = false; // a Z went out: the drive may have loaded the image even if its answer was lost
     quint64 m_waiting = 0;
     bool m_cancelled = false;
+    bool m_stopped = false; // cancelled by Ctrl C
     bool m_done = false;
 };
 

@@ -30,6 +30,7 @@ quint64 Sc750Session::send(char letter, const QString& payload, bool repeatable)
 
 void Sc750Session::sendStop() {
     write(QByteArray(1, sc::kStopByte));
+    emit stopSent();
 }
 
 void Sc750Session::sendProgramInput(const QByteArray& bytes) {

@@ -34,7 +34,8 @@ public:
     // answer frame sends it again at once instead of after the time-out, or fails it when the retry is
     // spent. Not for others: a damaged frame might be an event's, and the real answer still on its way.
     quint64 send(char letter, const QString& payload = {}, bool repeatable = false);
-    // Ctrl C, written at once ahead of the queue: stops the program and motion; programStopped follows.
+    // Ctrl C, written at once ahead of the queue: stops the program and motion; programStopped follows,
+    // stopSent() at once (a download in progress stops too).
     void sendStop();
     // Bytes for the running program's INPUT/INKEY$ (the output window), passed through untouched.
     void sendProgramInput(const QByteArray& bytes);
@@ -55,6 +56,7 @@ signals:
     void runTimeError(int faultCode, int line, const QString& text);
     void rawReceived(const QByteArray& bytes);
     void rawSent(const QByteArray& bytes);
+    void stopSent(); // sendStop() wrote Ctrl C
 
 private:
     struct Pending {

@@ -5,13 +5,12 @@
 
 namespace app {
 
-namespace {
-constexpr int kReconnectMs = 1000;
-}
-
 DriveConnection::DriveConnection(QObject* parent) : QObject(parent) {
-    m_reconnect.setInterval(kReconnectMs);
-    connect(&m_reconnect, &QTimer::timeout, this, &DriveConnection::tryReconnect);
+    connect(&m_reconnector, &LinkReconnector::lost, this, [this](const QString& description) {
+        emit errorOccurred(tr("The connection to the drive was lost (%1). Reconnecting every second; nothing "
+                              "in the editors is affected. Drive > Disconnect stops trying.")
+                               .arg(description));
+    });
 }
 
 DriveConnection::~DriveConnection() {
@@ -26,13 +25,12 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
     m_link = choice.makeLink();
     m_session = std::make_unique<serialport::Bds5Session>(*m_link);
     serialport::Link* link = m_link.get();
-    connect(link, &serialport::Link::opened, this, [this] {
-        m_reconnect.stop();
-        emit connectedChanged(true);
-    });
-    connect(link, &serialport::Link::closed, this, &DriveConnection::onLinkClosed);
+    // Said closed before the reconnector says lost; the reconnector stops before opened is said.
+    connect(link, &serialport::Link::closed, this, [this] { emit connectedChanged(false); });
+    m_reconnector.watch(link);
+    connect(link, &serialport::Link::opened, this, [this] { emit connectedChanged(true); });
     connect(link, &serialport::Link::errorOccurred, this, [this](const QString& message) {
-        if (!m_reconnect.isActive()) emit errorOccurred(message); // not once a second while it is away
+        if (!isReconnecting()) emit errorOccurred(message); // not once a second while it is away
     });
     connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
     connect(m_session.get(), &serialport::Bds5Session::shownReceived, this, &DriveConnection::shownReceived);
@@ -45,25 +43,7 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
 }
 
 void DriveConnection::disconnectDrive() {
-    m_reconnect.stop();
-    if (!m_link) return;
-    m_closing = true;
-    m_link->close();
-    m_closing = false;
-}
-
-void DriveConnection::onLinkClosed() {
-    emit connectedChanged(false);
-    if (m_closing || m_reconnect.isActive()) return;
-    emit errorOccurred(tr("The connection to the drive was lost (%1). Reconnecting every second; nothing "
-                          "in the editors is affected. Drive > Disconnect stops trying.")
-                           .arg(linkDescription()));
-    m_reconnect.start();
-}
-
-void DriveConnection::tryReconnect() {
-    if (!m_link || m_link->isOpen()) return m_reconnect.stop();
-    m_link->open(); // opened() stops the timer; a failure stays quiet and is tried again
+    m_reconnector.close();
 }
 
 QString DriveConnection::linkDescription() const {
@@ -93,11 +73,9 @@ bool DriveConnection::checkConnected() {
 }
 
 void DriveConnection::teardown() {
-    m_reconnect.stop();
     if (!m_link) return;
-    m_closing = true;
-    m_link->close(); // emits closed() while the session still listens, so pending commands fail cleanly
-    m_closing = false;
+    m_reconnector.close(); // emits closed() while the session still listens, so pending commands fail cleanly
+    m_reconnector.watch(nullptr);
     m_session.reset();
     m_link->disconnect(this);
     m_link.reset();

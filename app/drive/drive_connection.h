@@ -4,12 +4,12 @@
 #pragma once
 
 #include "connection_choice.h"
+#include "link_reconnector.h"
 
 #include "serialport/bds5_session.h"
 #include "serialport/link.h"
 
 #include <QObject>
-#include <QTimer>
 
 #include <memory>
 
@@ -29,7 +29,7 @@ public:
     void disconnectDrive();
 
     bool isConnected() const { return m_link && m_link->isOpen(); }
-    bool isReconnecting() const { return m_reconnect.isActive(); }
+    bool isReconnecting() const { return m_reconnector.isReconnecting(); }
     bool hasLink() const { return m_link != nullptr; }
     ConnectionChoice choice() const { return m_choice; }
     QString linkDescription() const;
@@ -54,8 +54,6 @@ signals:
 
 private:
     void teardown();
-    void onLinkClosed();
-    void tryReconnect();
     bool checkConnected(); // says "not connected" once, not on every key press
 
     ConnectionChoice m_choice;
@@ -63,8 +61,7 @@ private:
     std::unique_ptr<serialport::Link> m_link;
     std::unique_ptr<serialport::Bds5Session> m_session;
     bool m_reportedNotConnected = false; // say "not connected" once, not on every key press
-    bool m_closing = false;              // the user (or a new connection) closes the link: no reconnect
-    QTimer m_reconnect;
+    LinkReconnector m_reconnector;       // reopens the link when it closes by itself
 };
 
 } // namespace app

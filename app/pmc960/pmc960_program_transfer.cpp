@@ -65,6 +65,7 @@ void Pmc960ProgramTransfer::download(editor::ProgramEditor* editor) {
     if (!editor || !canStart()) return;
     const QString text = editor->text();
     auto* job = new serialport::Pmc960Download(*m_workspace.session(), text, this);
+    m_download = job;
     const int total = int(job->lines().size());
     setBusy(true);
     m_progress = new QProgressDialog(tr("Downloading %n line(s) to the PMC-960 program buffer\u2026", nullptr, total),
@@ -114,6 +115,10 @@ void Pmc960ProgramTransfer::finishDownload(const serialport::Pmc960DownloadResul
     }
     setBusy(false);
     emit downloadFinished(result, line);
+}
+
+void Pmc960ProgramTransfer::cancelDownload() {
+    if (m_download) m_download->cancel();
 }
 
 void Pmc960ProgramTransfer::upload() {

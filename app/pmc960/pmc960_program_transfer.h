@@ -28,6 +28,9 @@ public:
     void download(editor::ProgramEditor* editor);
     void upload();
     bool isBusy() const { return m_busy; }
+    // The user's Stop: a running download writes ESC at once and ends cancelled (Pmc960Download::cancel).
+    // An upload only reads and runs to its end.
+    void cancelDownload();
     // The last transfer's summary as shown to the user ("Downloaded 7 lines; checksum 0x1A2B verified").
     QString lastMessage() const { return m_lastMessage; }
     // The progress dialog of the running download (the tour grabs it), else nullptr.
@@ -53,6 +56,7 @@ private:
 
     Pmc960Workspace& m_workspace;
     QPointer<QProgressDialog> m_progress;
+    QPointer<serialport::Pmc960Download> m_download;
     QString m_lastMessage;
     bool m_busy = false;
 };

@@ -23,6 +23,12 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     : FamilyWorkspace(&window), m_window(window), m_transfer(new Pmc960ProgramTransfer(*this)),
       m_status(new Pmc960StatusDock(&window)), m_parameters(new Pmc960ParameterDock(&window)),
       m_menu(new QMenu(tr("&MPL"), &window)), m_errors(new Pmc960ErrorSource(*this)) {
+    connect(&m_reconnector, &LinkReconnector::lost, this, [this](const QString& description) {
+        emit message(tr("The connection to the PMC-960 was lost (%1). Reconnecting every second; nothing in the "
+                        "editors is affected. Drive > Disconnect stops trying.")
+                         .arg(description));
+        emit statusChanged();
+    });
     m_menu->setObjectName(QStringLiteral("mplMenu"));
     QAction* download = m_menu->addAction(tr("&Download Program"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
                                           [this] { m_transfer->download(m_window.editor()); });
@@ -97,6 +103,7 @@ void Pmc960Workspace::activate(const ConnectionChoice& choice) {
         updateActions();
         emit statusChanged();
     });
+    m_reconnector.watch(m_link.get()); // after the handler above: lost is said once the state shows it
     connect(m_session.get(), &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
     connect(m_session.get(), &serialport::Pmc960Session::shownReceived, this, &Pmc960Workspace::terminalReceived);
     connect(m_session.get(), &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
@@ -118,6 +125,7 @@ bool Pmc960Workspace::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
 
 void Pmc960Workspace::onOpened() {
     if (m_connected) return;
+    // (After a lost connection too: the session asks for the prompt again, the docks poll again.)
     m_connected = true;
     m_status->setSession(m_session.get());
     m_parameters->setSession(m_session.get());
@@ -140,6 +148,7 @@ void Pmc960Workspace::onLinkError(const QString& text) {
 }
 
 void Pmc960Workspace::deactivate() {
+    m_reconnector.watch(nullptr); // closed on purpose: not lost
     const bool was = m_connected || m_link;
     m_connected = false;
     m_status->setSession(nullptr);
@@ -165,6 +174,7 @@ bool Pmc960Workspace::isConnected() const {
 
 QString Pmc960Workspace::statusText() const {
     if (!m_link) return tr("PMC-960: not connected");
+    if (isReconnecting()) return tr("PMC-960 on %1: connection lost, reconnecting\u2026").arg(m_linkText);
     if (!m_connected) return tr("PMC-960 on %1: connecting\u2026").arg(m_linkText);
     using State = serialport::Pmc960Session::State;
     QString state;
@@ -180,7 +190,10 @@ QString Pmc960Workspace::statusText() const {
 void Pmc960Workspace::stop() {
     if (!m_connected) return;
     if (m_transfer->isBusy() && m_transfer->progressDialog()) {
-        m_transfer->progressDialog()->cancel(); // the download leaves the editor and protects the buffer
+        // ESC goes out now; the download leaves the editor and protects the buffer. (QProgressDialog::cancel()
+        // would only hide the dialog: it does not emit canceled().)
+        m_transfer->cancelDownload();
+        emit message(tr("Stop: ESC sent to the PMC-960; the download is cancelled"));
         return;
     }
     m_session->cancelPending();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "family_workspace.h"
+#include "link_reconnector.h"
 
 #include "serialport/pmc960_session.h"
 
@@ -44,6 +45,8 @@ public:
     serialport::Pmc960Session* session() const { return m_connected ? m_session.get() : nullptr; }
     // The link while connected (the simulator's bench for the tour and tests), else nullptr.
     serialport::Link* link() const { return m_connected ? m_link.get() : nullptr; }
+    // The link closed by itself and is reopened every second (LinkReconnector) until the device is back.
+    bool isReconnecting() const { return m_reconnector.isReconnecting(); }
     MainWindow& window() const { return m_window; }
     Pmc960ProgramTransfer& transfer() const { return *m_transfer; }
     Pmc960StatusDock* statusDock() const { return m_status; }
@@ -78,6 +81,7 @@ private:
     QPointer<WatchView> m_watch;
     QString m_linkText;
     bool m_connected = false;
+    LinkReconnector m_reconnector;
 };
 
 } // namespace app

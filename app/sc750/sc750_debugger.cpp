@@ -206,6 +206,7 @@ void Sc750Debugger::adoptDriveStatus(const QString& payload) {
 
 void Sc750Debugger::attachSession() {
     serialport::Sc750Session* session = m_workspace.session();
+    if (session) session->disconnect(this); // the same session again after a reconnect: connected once
     if (!session) {
         setState(State::NoProgram);
         return;

@@ -175,6 +175,7 @@ void Sc750Workspace::activate(const ConnectionChoice& choice) {
         updateActions();
         emit statusChanged();
     });
+    m_reconnector.watch(m_link.get()); // after the handler above: lost is said once the state shows it
     m_link->open();
     emit statusChanged();
 }
@@ -204,6 +205,7 @@ void Sc750Workspace::onLinkError(const QString& text) {
 }
 
 void Sc750Workspace::deactivate() {
+    m_reconnector.watch(nullptr); // closed on purpose: not lost
     if (!m_link) return;
     m_waiting.clear();
     const bool wasConnected = m_connected;
@@ -234,6 +236,8 @@ bool Sc750Workspace::isConnected() const {
 }
 
 QString Sc750Workspace::statusText() const {
+    if (isReconnecting())
+        return tr("SC750 axis %1 on %2: connection lost, reconnecting\u2026").arg(m_axis).arg(m_linkText);
     if (!m_connected) return tr("SC750 axis %1, not connected").arg(m_axis);
     return tr("%1 axis %2, %3 \u2014 %4").arg(m_linkText).arg(m_axis).arg(m_debugger->stateText(), m_link->description());
 }
@@ -259,7 +263,8 @@ void Sc750Workspace::updateActions() {
     action(QStringLiteral("Clear All Breakpoints"))->setEnabled(m_shown);
     action(QStringLiteral("Output Window"))->setEnabled(m_shown);
     action(QStringLiteral("Variables"))->setEnabled(m_shown);
-    action(QStringLiteral("Stop Program"))->setEnabled(on && state == State::Running);
+    // During a download too: Ctrl C stops motion and the download (no frame goes out after it).
+    action(QStringLiteral("Stop Program"))->setEnabled(on && (state == State::Running || state == State::Downloading));
     action(QStringLiteral("Continue Program"))->setEnabled(on && (state == State::Stopped || state == State::AtBreakpoint));
     action(QStringLiteral("Real Time Function Call"))->setEnabled(idle);
     for (QAction* a : m_optionsMenu->actions()) a->setEnabled(m_shown);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "family_workspace.h"
+#include "link_reconnector.h"
 
 #include "serialport/sc750_session.h"
 
@@ -48,6 +49,8 @@ public:
 
     // The session while the link is open, else nullptr.
     serialport::Sc750Session* session() const { return m_connected ? m_session.get() : nullptr; }
+    // The link closed by itself and is reopened every second (LinkReconnector) until the device is back.
+    bool isReconnecting() const { return m_reconnector.isReconnecting(); }
     Sc750Debugger& debugger() const { return *m_debugger; }
     Sc750OutputDock* outputDock() const { return m_output; }
     Sc750VariablesDock* variablesDock() const { return m_variables; }
@@ -96,6 +99,7 @@ private:
     bool m_connected = false;
     bool m_shown = false;
     bool m_placed = false; // the output dock moved under the editor on first show
+    LinkReconnector m_reconnector;
 };
 
 } // namespace app

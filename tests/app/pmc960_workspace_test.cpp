@@ -1,7 +1,8 @@
 // The PMC-960 workspace in the real MainWindow against the simulated controller (issue 9): the MPL menu
 // replaces the BDS5's; a manual example downloads with its checksum verified and uploads unchanged; a
 // program too big for the buffer gets the controller's #C1 with its line; the status panel follows a move;
-// the parameter table shows stored vs in-use values and an edit reaches the controller; .mpl tabs use MPL.
+// the parameter table shows stored vs in-use values and an edit reaches the controller; .mpl tabs use MPL;
+// Stop during a download cancels it.
 #include "app/main_window.h"
 #include "app/pmc960/mpl_language.h"
 #include "app/pmc960/pmc960_parameter_dock.h"
@@ -135,6 +136,36 @@ private slots:
         int cursorLine = 0, index = 0;
         window.editor()->getCursorPosition(&cursorLine, &index);
         QCOMPARE(cursorLine + 1, line);
+    }
+
+    // MPL > Stop while a download runs (issue 11): ESC goes out at once, the download ends cancelled (the
+    // progress dialog's own cancel() would only have hidden it), the editor keeps its text.
+    void stopDuringADownloadCancelsIt() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected() && ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+        QString program = QStringLiteral("@A\n");
+        for (int i = 1; i <= 60; ++i) program += QStringLiteral("A%1\n").arg(i * 10);
+        newMplTab(window, QStringLiteral("long.mpl"), program);
+        QSignalSpy downloaded(&ws.transfer(), &app::Pmc960ProgramTransfer::downloadFinished);
+        QSignalSpy messages(&ws, &app::FamilyWorkspace::message);
+        ws.action(QStringLiteral("Download Program"))->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(ws.transfer().progressDialog() && ws.transfer().progressDialog()->value() >= 3,
+                                 kTimeoutMs);
+        ws.action(QStringLiteral("Stop"))->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(downloaded.count(), 1, kTimeoutMs);
+        const auto result = downloaded.at(0).at(0).value<serialport::Pmc960DownloadResult>();
+        QVERIFY(!result.ok);
+        QVERIFY2(result.cancelled, qPrintable(result.reason));
+        QVERIFY2(ws.transfer().lastMessage().startsWith(QStringLiteral("Download cancelled after")),
+                 qPrintable(ws.transfer().lastMessage()));
+        bool saidEsc = false;
+        for (const auto& m : messages) saidEsc |= m.at(0).toString().startsWith(QStringLiteral("Stop: ESC sent"));
+        QVERIFY(saidEsc);
+        QCOMPARE(window.editor()->text(), program);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+        QVERIFY(ws.action(QStringLiteral("Download Program"))->isEnabled());
     }
 
     void statusPanelFollowsAMove() {

@@ -5,18 +5,30 @@
 //   1  a .VAR file (Bds5VariableFile::parse, then its own text must parse to the same assignments)
 //   2  a program prepared for download (Bds5ProgramText: comment stripping and the line maps)
 //   3  error and prompt lines (parseErrorLine, trailingPrompt) one line at a time
+//   4  the Sc750Session frame reader under a running Sc750Download: the rest is the SC750's byte stream
+//      (frames, program output, events, refusals), in chunks split at 0xFF with commands, program input
+//      and (once) Ctrl C between chunks; the download parses V, W offsets, !04 OFFSET n and refusals
+//   5  the Pmc960Session response reader under a running Pmc960Download: prompt detection, #xx decoding,
+//      poll answers and the <attn>h checksum answer, in chunks split at 0xFF with commands, polls, editor
+//      lines, typed bytes and resynchronisation between chunks
 // The same file is the body of host_parsers_fuzz_replay, which runs the corpus in every CTest build.
 #include "serialport/bds5_program_text.h"
 #include "serialport/bds5_protocol.h"
 #include "serialport/bds5_session.h"
 #include "serialport/bds5_variable_file.h"
 #include "serialport/link.h"
+#include "serialport/pmc960_download.h"
+#include "serialport/pmc960_session.h"
+#include "serialport/sc750_download.h"
+#include "serialport/sc750_session.h"
 
 #include <QCoreApplication>
 
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
+#include <vector>
 
 namespace {
 
@@ -25,9 +37,11 @@ namespace {
     std::abort();
 }
 
-// A link whose far end is the fuzzer: writes vanish, bytes arrive when told.
+// A link whose far end is the fuzzer: writes vanish, bytes arrive when told. quietMs 0 (the PMC-960's)
+// lets a prompt settle at the next processEvents() instead of after real milliseconds.
 class FuzzLink final : public serialport::Link {
 public:
+    explicit FuzzLink(int quietMs = 20) : m_quietMs(quietMs) {}
     void open() override {
         m_open = true;
         emit opened();
@@ -40,12 +54,25 @@ public:
     void write(const QByteArray& bytes) override { m_written += bytes.size(); }
     QString description() const override { return QStringLiteral("fuzz"); }
     int baudRate() const override { return 9600; }
+    int quietMs() const override { return m_quietMs; }
     void deliver(const QByteArray& bytes) { emit bytesReceived(bytes); }
     qint64 written() const { return m_written; }
 
 private:
+    int m_quietMs;
     bool m_open = false;
     qint64 m_written = 0;
+};
+
+// Every request id is answered (finished, answered or failed) at most once.
+class AnsweredOnce {
+public:
+    void operator()(quint64 id) {
+        if (!m_ids.insert(id).second) fail("a request was answered twice");
+    }
+
+private:
+    std::set<quint64> m_ids;
 };
 
 void fuzzSession(const QByteArray& stream) {
@@ -92,6 +119,87 @@ void fuzzLines(const QString& text) {
     }
 }
 
+void fuzzSc750(const QByteArray& stream) {
+    using namespace serialport;
+    FuzzLink link;
+    Sc750Session session(link);
+    link.open();
+    AnsweredOnce answered;
+    QObject::connect(&session, &Sc750Session::finished, [&](quint64 id, const Sc750Reply& reply) {
+        answered(id);
+        if (reply.isError()) fail("an SC750 error answer passed as a result");
+    });
+    QObject::connect(&session, &Sc750Session::failed, [&](quint64 id, const QString&) { answered(id); });
+    Sc750Download download(session, std::vector<std::uint8_t>(100, 0x5A));
+    int downloadsFinished = 0;
+    QObject::connect(&download, &Sc750Download::progress, [](qint64 sent, qint64 total) {
+        if (sent < 0 || sent > total) fail("SC750 download progress outside the .BIN");
+    });
+    QObject::connect(&download, &Sc750Download::finished, [&](bool, const QString&) { ++downloadsFinished; });
+    download.start();
+    int chunk = 0;
+    int frameEnds = 0;
+    for (const QByteArray& part : stream.split('\xff')) {
+        link.deliver(part);
+        frameEnds += int(part.count('\r'));
+        switch (chunk++ % 5) {
+        case 0: session.send('G', QStringLiteral("POS")); break;
+        case 1: session.send('?', {}, true); break;
+        case 2: session.sendProgramInput("12\r\x01"); break;
+        case 3: session.logOn(3); break;
+        default: chunk == 10 ? session.sendStop() : (void)session.send('P', QStringLiteral("X=1")); break;
+        }
+        QCoreApplication::processEvents();
+    }
+    if (downloadsFinished > 1) fail("the SC750 download finished twice");
+    // each frame end sends at most one frame (a retry or the next command), as does each chunk's command
+    if (link.written() > 256 * (qint64(frameEnds) + chunk + 2)) fail("the SC750 session wrote out of proportion");
+}
+
+void fuzzPmc960(const QByteArray& stream) {
+    using namespace serialport;
+    FuzzLink link(0);
+    Pmc960Session session(link);
+    link.open();
+    AnsweredOnce answered;
+    QObject::connect(&session, &Pmc960Session::finished, [&](quint64 id, const Pmc960Response& response) {
+        answered(id);
+        if (response.error < 0 || response.error > 0xFF) fail("a #xx code outside two hex digits");
+        if ((response.error != 0) == response.errorText.isEmpty()) fail("an error code without its text");
+    });
+    QObject::connect(&session, &Pmc960Session::pollAnswered, [&](quint64 id, char, const QString&) { answered(id); });
+    QObject::connect(&session, &Pmc960Session::failed, [&](quint64 id, const QString&) { answered(id); });
+    int asyncErrors = 0;
+    QObject::connect(&session, &Pmc960Session::asyncError, [&](int code, const QString&) {
+        ++asyncErrors;
+        if (code < 0 || code > 0xFF) fail("an asynchronous #xx code outside two hex digits");
+    });
+    Pmc960Download download(session, QStringLiteral("@T\nA3500\nI4000+\n"));
+    int downloadsDone = 0;
+    QObject::connect(&download, &Pmc960Download::done, [&](const Pmc960DownloadResult& result) {
+        ++downloadsDone;
+        if (result.ok && result.hostChecksum != result.driveChecksum) fail("a download passed a checksum mismatch");
+    });
+    download.start();
+    int chunk = 0;
+    for (const QByteArray& part : stream.split('\xff')) {
+        link.deliver(part);
+        switch (chunk++ % 7) {
+        case 0: session.send("A?"); break;
+        case 1: session.poll('g'); break;
+        case 2: session.sendExpecting("I+\r", "I+\r\n"); break;
+        case 3: session.sendTyped("V?"); break;
+        case 4: session.send("A3500\r"); break;
+        case 5: session.resynchronise("\x1b"); break;
+        default: continue; // the next chunk arrives before the prompt has settled
+        }
+        QCoreApplication::processEvents(); // a prompt settles here (quietMs 0)
+    }
+    if (downloadsDone > 1) fail("the PMC-960 download finished twice");
+    if (asyncErrors > stream.count('#')) fail("an asynchronous error reported more often than the controller sent it");
+    if (link.written() > 64 * (stream.size() + 16)) fail("the PMC-960 session wrote out of proportion");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -101,11 +209,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static QCoreApplication app(argc, argv);
     if (size == 0 || size > (1u << 16)) return 0;
     const QByteArray rest(reinterpret_cast<const char*>(data) + 1, qsizetype(size - 1));
-    switch (data[0] % 4) {
+    switch (data[0] % 6) {
     case 0: fuzzSession(rest); break;
     case 1: fuzzVariableFile(QString::fromLatin1(rest)); break;
     case 2: fuzzProgramText(QString::fromLatin1(rest)); break;
-    default: fuzzLines(QString::fromLatin1(rest)); break;
+    case 3: fuzzLines(QString::fromLatin1(rest)); break;
+    case 4: fuzzSc750(rest); break;
+    default: fuzzPmc960(rest); break;
     }
     return 0;
 }

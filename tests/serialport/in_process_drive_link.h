@@ -2,7 +2,8 @@
 // campaign can look into the drive afterwards (the program image an SC750 loaded, the program a PMC-960
 // holds) — what SimulatorLink, with its drive in a worker thread, does not offer. No wire: bytes cross at
 // once; the drive steps 1 ms per elapsed millisecond on a timer. baudRate() is what the sessions derive
-// their time-outs from. Test helper; GUI thread.
+// their time-outs from. Every write is logged with the drive's time (driveMs) when it reached the drive.
+// Test helper; GUI thread.
 #pragma once
 
 #include "serialport/link.h"
@@ -10,8 +11,10 @@
 #include "drive_core/drive_factory.h"
 
 #include <QElapsedTimer>
+#include <QList>
 #include <QTimer>
 
+#include <functional>
 #include <memory>
 
 class InProcessDriveLink final : public serialport::Link {
@@ -43,15 +46,35 @@ public:
     bool isOpen() const override { return m_open; }
     void write(const QByteArray& bytes) override {
         if (!m_open) return;
+        m_writes.append({m_steppedMs, bytes});
         m_drive->receive(std::string_view(bytes.constData(), std::size_t(bytes.size())));
         m_drive->step(std::chrono::microseconds(0));        // the drive answers without time passing, as in the worker
         QTimer::singleShot(0, this, [this] { deliver(); }); // never from inside write()
+        if (afterWrite) afterWrite(bytes);
     }
+    // Called at the end of each write, once the drive has the bytes and before it answers. With holdAnswers
+    // set there, a test acts from the event loop while those bytes are in flight (a stop pressed while a
+    // line is on its way) and lets the answers through afterwards.
+    std::function<void(const QByteArray&)> afterWrite;
+    bool holdAnswers = false;
     QString description() const override { return QStringLiteral("in-process drive"); }
     int baudRate() const override { return m_baud; }
     int quietMs() const override { return 4; }
 
     drive_core::Drive& drive() { return *m_drive; }
+    // Milliseconds the drive has been stepped since open().
+    qint64 driveMs() const { return m_steppedMs; }
+    struct Write {
+        qint64 driveMs = 0;
+        QByteArray bytes;
+    };
+    const QList<Write>& writes() const { return m_writes; }
+    // Everything written from the index-th write on.
+    QByteArray writtenFrom(qsizetype index) const {
+        QByteArray all;
+        for (qsizetype i = index; i < m_writes.size(); ++i) all += m_writes.at(i).bytes;
+        return all;
+    }
 
 private:
     void tick() {
@@ -63,7 +86,7 @@ private:
         deliver();
     }
     void deliver() {
-        if (!m_open) return;
+        if (!m_open || holdAnswers) return;
         const std::string out = m_drive->takeTransmitted();
         if (!out.empty()) emit bytesReceived(QByteArray(out.data(), qsizetype(out.size())));
     }
@@ -74,4 +97,5 @@ private:
     QTimer m_timer;
     QElapsedTimer m_clock;
     qint64 m_steppedMs = 0;
+    QList<Write> m_writes;
 };

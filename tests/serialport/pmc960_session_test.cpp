@@ -1,7 +1,9 @@
 // Pmc960Session and Pmc960Download over SimulatorLink (the simulated PMC-960): prompt handling, #xx
 // decoding, polls between commands, and a download verified by the communications checksum.
+#include "serialport/fault_link.h"
 #include "serialport/pmc960_download.h"
 #include "serialport/pmc960_session.h"
+#include "serialport/pmc960_timing.h"
 #include "serialport/pmc960_upload.h"
 #include "serialport/simulator_link.h"
 
@@ -9,6 +11,29 @@
 #include <QTest>
 
 using namespace serialport;
+
+namespace {
+// The controller's side played by the test: writes vanish, bytes arrive when delivered.
+class ScriptLink final : public Link {
+public:
+    void open() override {
+        m_open = true;
+        emit opened();
+    }
+    void close() override {
+        m_open = false;
+        emit closed();
+    }
+    bool isOpen() const override { return m_open; }
+    void write(const QByteArray&) override {}
+    QString description() const override { return QStringLiteral("script"); }
+    int baudRate() const override { return 9600; }
+    void deliver(const QByteArray& bytes) { emit bytesReceived(bytes); }
+
+private:
+    bool m_open = false;
+};
+} // namespace
 
 class Pmc960SessionTest : public QObject {
     Q_OBJECT
@@ -195,6 +220,26 @@ private slots:
         QCOMPARE(run(f.session, "A?").value, QStringLiteral("4000")); // at the command prompt again
     }
 
+    // A lost answer is reported after the time-out derived from the link's baud rate and the command
+    // (Pmc960Timing), which the message names: longer on a slower line.
+    void aLostAnswerTimesOutByTheBaudRate() {
+        for (const int baud : {9600, 1200}) {
+            SimulatorLink inner{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, baud, false}};
+            FaultLink link(inner, 1, {}, {});
+            Pmc960Session session(link);
+            link.open();
+            QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 5000);
+            link.setFaults({.drop = 1.0}, {}); // nothing reaches the controller any more
+            QSignalSpy failed(&session, &Pmc960Session::failed);
+            const quint64 id = session.send("A?");
+            QVERIFY(failed.wait(10000));
+            QCOMPARE(failed.first().at(0).value<quint64>(), id);
+            const int expected = Pmc960Timing::commandTimeoutMs("A?", baud);
+            QCOMPARE(failed.first().at(1).toString(), QStringLiteral("no answer within %1 ms").arg(expected));
+            QCOMPARE(session.state(), Pmc960Session::State::WaitingForPrompt); // asking for a prompt again
+        }
+    }
+
     void downloadStopsOnABufferFull() {
         Fixture f;
         QString big;
@@ -206,6 +251,45 @@ private slots:
         const auto result = done.at(0).at(0).value<Pmc960DownloadResult>();
         QVERIFY(!result.ok);
         QCOMPARE(result.error, 0xC1);
+    }
+
+    // Regression (host_parsers_fuzz, corpus/host/crash-pmc960-async-twice): while the session waits for the
+    // line to settle, every further prompt rescanned the whole buffer and an #E0 ahead of the first prompt
+    // was logged again for each prompt that followed (ESC and CR each prompt after a resynchronisation).
+    void anAsynchronousErrorIsReportedOnceWhilePromptsFollow() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        QSignalSpy errors(&session, &Pmc960Session::asyncError);
+        link.open();
+        link.deliver("#E0\r\n=}");
+        link.deliver("\r\n=}");
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QCOMPARE(errors.count(), 1);
+        QCOMPARE(errors.at(0).at(0).toInt(), 0xE0);
+    }
+
+    // Regression (host_parsers_fuzz, corpus/host/crash-pmc960-hash-00): "#00" on a damaged line decoded as
+    // error 0 with the text "unknown error", and vanished from the value. Only #80..#FF are the controller's.
+    void aHashWithoutTheHighBitIsNotAnErrorCode() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        link.open();
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QSignalSpy finished(&session, &Pmc960Session::finished);
+        session.send("A?");
+        link.deliver("A?#00\r\n=}");
+        session.send("I100+");
+        link.deliver("I100+#B6\r\n=}");
+        QCOMPARE(finished.count(), 2);
+        const auto damaged = finished.at(0).at(1).value<Pmc960Response>();
+        QCOMPARE(damaged.error, 0);
+        QCOMPARE(damaged.errorText, QString());
+        QCOMPARE(damaged.value, QStringLiteral("#00"));
+        const auto refused = finished.at(1).at(1).value<Pmc960Response>();
+        QCOMPARE(refused.error, 0xB6);
+        QCOMPARE(refused.errorText, QStringLiteral("Servodrive not enabled"));
     }
 };
 
