@@ -17,6 +17,9 @@
 #include <qcustomplot.h>
 
 #include <QDialog>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
 #include <QSet>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -173,6 +176,53 @@ private slots:
         QCOMPARE(view->model()->rowCount(), 160);
         QCOMPARE(view->model()->headerData(2, Qt::Horizontal).toString(), QStringLiteral("VFB (VEL)"));
         data->close();
+    }
+
+    // Scope > Export Plot: the file's suffix picks the format; each file holds the recorded step.
+    void exportWritesPngSvgAndPdf() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::ScopeController& scope = w.window.scopeController();
+        QTemporaryDir dir;
+        const QString empty = dir.filePath(QStringLiteral("empty.pdf")); // axes only, to compare with
+        QVERIFY(scope.exportTo(empty));
+        QSignalSpy shown(&scope, &app::ScopeController::captureShown);
+        scope.record(velocityStep());
+        QVERIFY(shown.wait(kDriveTimeoutMs));
+        QVERIFY(QTest::qWaitForWindowExposed(scope.view()->plot()));
+
+        const QString png = dir.filePath(QStringLiteral("scope.png"));
+        QVERIFY(scope.exportTo(png));
+        QCOMPARE(w.window.statusBar()->currentMessage(), QStringLiteral("Exported the plot to scope.png"));
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), scope.view()->plot()->customPlot()->size());
+        QVERIFY2(distinctColours(image) > 20, "the exported PNG is blank");
+
+        const QString svg = dir.filePath(QStringLiteral("scope.svg"));
+        QVERIFY(scope.exportTo(svg));
+        QFile svgFile(svg);
+        QVERIFY(svgFile.open(QIODevice::ReadOnly));
+        const QString drawing = QString::fromUtf8(svgFile.readAll());
+        QVERIFY(drawing.startsWith(QStringLiteral("<svg")) || drawing.contains(QStringLiteral("<svg ")));
+        // One polyline per channel, a point for each of the 160 samples in view.
+        const QRegularExpression polyline(QStringLiteral("<polyline[^>]*points=\"([^\"]*)\""));
+        QList<int> points;
+        for (auto it = polyline.globalMatch(drawing); it.hasNext();)
+            points << int(it.next().captured(1).split(QLatin1Char(' '), Qt::SkipEmptyParts).size());
+        QCOMPARE(points, (QList<int>{160, 160}));
+        QVERIFY(drawing.contains(QStringLiteral("VFB [VEL]")));
+
+        const QString pdf = dir.filePath(QStringLiteral("scope.pdf"));
+        QVERIFY(scope.exportTo(pdf));
+        QFile pdfFile(pdf);
+        QVERIFY(pdfFile.open(QIODevice::ReadOnly));
+        const QByteArray document = pdfFile.readAll();
+        QVERIFY(document.startsWith("%PDF-"));
+        // The two graphs' 320 points are drawn as vectors: far more than the axes of the empty plot.
+        const qint64 emptySize = QFileInfo(empty).size();
+        QVERIFY2(document.size() > emptySize + 1000,
+                 qPrintable(QStringLiteral("%1 vs %2 bytes").arg(document.size()).arg(emptySize)));
     }
 
     void tooManyPointsShowsTheDrivesError() {
