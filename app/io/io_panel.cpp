@@ -161,6 +161,10 @@ bool IoPanel::isSimulated() const {
     return m_simulator != nullptr;
 }
 
+QString IoPanel::readoutText() const {
+    return m_readout->text();
+}
+
 bool IoPanel::outputLit(int number) const {
     return number >= 1 && number <= int(m_outputState.size()) && m_outputState[std::size_t(number - 1)];
 }

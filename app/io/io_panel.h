@@ -35,6 +35,10 @@ public:
     QPushButton* inputButton(int number) const { return m_inputs.value(number - 1); }
     QPushButton* powerCycleButton() const { return m_powerCycle; }
     bool outputLit(int number) const;
+    // The bench's line under the controls: "ACTIVE  pos 0.000 rev  vel 0.0 rpm  I 0.00 A  REF-MEDIUM".
+    QString readoutText() const;
+    // The bench's load torque field (N m), as a user types into it.
+    QDoubleSpinBox* loadTorqueField() const { return m_torque; }
     bool isSimulated() const;
 
 private:

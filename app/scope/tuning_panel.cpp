@@ -125,6 +125,7 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
         if (connected) m_runner->readGains();
     });
     applyTestMove();
+    updateProposal();
     updateButtons();
 }
 
@@ -153,17 +154,40 @@ QWidget* TuningPanel::buildTestMove() {
     m_amplitude = new QSpinBox(box);
     m_amplitude->setRange(1, 1'000'000);
     m_amplitude->setValue(1000);
-    m_amplitude->setToolTip(tr("Velocity (J) or counts (MI). Keep it small enough that ICMD stays below ILIM."));
+    m_amplitude->setToolTip(tr("Velocity (J) or counts (MI). Proposed from the drive's ILIM, IMAX, KV, ACC and "
+                               "units so that ICMD stays at most about half of ILIM."));
     m_duration = new QSpinBox(box);
     m_duration->setRange(10, 10'000);
     m_duration->setValue(150);
     m_duration->setSuffix(tr(" ms"));
+    auto* propose = new QPushButton(tr("Propose"), box);
+    propose->setToolTip(tr("Set the amplitude proposed from the drive's values."));
+    auto* amplitudeRow = new QHBoxLayout;
+    amplitudeRow->addWidget(m_amplitude, 1);
+    amplitudeRow->addWidget(propose);
+    m_proposal = new QLabel(box);
+    m_proposal->setObjectName(QStringLiteral("tuningProposal"));
+    m_proposal->setWordWrap(true);
     form->addRow(tr("Preset"), m_moveKind);
-    form->addRow(tr("Amplitude"), m_amplitude);
+    form->addRow(tr("Amplitude"), amplitudeRow);
+    form->addRow(m_proposal);
     form->addRow(tr("Hold"), m_duration);
-    connect(m_moveKind, &QComboBox::currentIndexChanged, this, &TuningPanel::applyTestMove);
-    connect(m_amplitude, &QSpinBox::valueChanged, this, &TuningPanel::applyTestMove);
-    connect(m_duration, &QSpinBox::valueChanged, this, &TuningPanel::applyTestMove);
+    connect(propose, &QPushButton::clicked, this, &TuningPanel::useProposedAmplitude);
+    connect(m_moveKind, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_settingFields) m_followProposal = true; // a preset chosen by the user gets its proposal
+        updateProposal();
+        applyTestMove();
+    });
+    connect(m_amplitude, &QSpinBox::valueChanged, this, [this] {
+        if (!m_settingFields) m_followProposal = false; // the user's own amplitude stays
+        applyTestMove();
+    });
+    connect(m_duration, &QSpinBox::valueChanged, this, [this] {
+        updateProposal();
+        applyTestMove();
+    });
+    connect(m_runner, &TuningRunner::driveValuesRead, this, &TuningPanel::updateProposal);
+    connect(m_runner, &TuningRunner::gainConfirmed, this, &TuningPanel::updateProposal);
     m_runOnce = new QPushButton(tr("Run Once"), box);
     m_runLoop = new QPushButton(tr("Run Continuously"), box);
     m_stop = new QPushButton(tr("Stop"), box);
@@ -223,15 +247,53 @@ void TuningPanel::applyTestMove() {
     move.kind = TestMove::Kind(m_moveKind->currentData().toInt());
     move.amplitude = m_amplitude->value();
     move.durationMs = m_duration->value();
+    if (move.kind == TestMove::Kind::PositionStep && !m_runner->driveValues().isEmpty())
+        move.moveVelocity = TestMove::proposedMoveVelocity(move.durationMs, proposalValues());
     m_runner->setTestMove(move);
     m_moveKind->setToolTip(move.plan().recordLine() + QStringLiteral(" \u2014 ") + move.description());
 }
 
 void TuningPanel::setTestMove(const TestMove& move) {
+    m_followProposal = false;
+    m_settingFields = true;
     m_moveKind->setCurrentIndex(m_moveKind->findData(int(move.kind)));
     m_amplitude->setValue(move.amplitude);
     m_duration->setValue(move.durationMs);
+    m_settingFields = false;
     applyTestMove();
+}
+
+TestMove::DriveValues TuningPanel::proposalValues() const {
+    TestMove::DriveValues values = m_runner->driveValues();
+    for (const char* name : {"ILIM", "KV"}) // the gains as last sent win over the values as last read
+        if (m_runner->gains().contains(QLatin1String(name)))
+            values[QLatin1String(name)] = m_runner->gains().value(QLatin1String(name));
+    return values;
+}
+
+int TuningPanel::proposedAmplitude() const {
+    return TestMove::proposedAmplitude(TestMove::Kind(m_moveKind->currentData().toInt()), m_duration->value(),
+                                       proposalValues());
+}
+
+void TuningPanel::useProposedAmplitude() {
+    m_followProposal = true;
+    updateProposal();
+}
+
+void TuningPanel::updateProposal() {
+    const int proposed = proposedAmplitude();
+    const bool known = !m_runner->driveValues().isEmpty();
+    m_proposal->setText(known ? tr("Proposed: %1, so that ICMD stays at most about half of ILIM.").arg(proposed)
+                              : tr("Proposed amplitude: once the drive's values are read."));
+    if (!known || !m_followProposal || m_amplitude->value() == proposed) return applyTestMove();
+    m_settingFields = true;
+    m_amplitude->setValue(proposed); // applies the move
+    m_settingFields = false;
+}
+
+QString TuningPanel::warningText() const {
+    return m_warning->isHidden() ? QString() : m_warning->text(); // also while the dock is closed
 }
 
 void TuningPanel::addRun(const TuningRun& run) {

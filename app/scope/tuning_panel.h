@@ -1,7 +1,8 @@
 // TuningPanel: the Tuning dock — gains (spin boxes + sliders bounded by the catalog, each change sent and
-// confirmed), a test move preset, Run once / Run continuously / Stop, the runs' overlays on a scope with
-// measurements, a per-run table (overshoot, rise, settle, cycle time) with undo to any run's gains and
-// Save .VAR, and TUNE with the manual's warning. The drive work is TuningRunner's. GUI thread only.
+// confirmed), a test move preset with an amplitude proposed from the drive's values, Run once / Run continuously /
+// Stop, the runs' overlays on a scope with measurements, a per-run table (overshoot, rise, settle, cycle time) with
+// undo to any run's gains and Save .VAR, and TUNE with the manual's warning. The drive work is TuningRunner's. GUI
+// thread only.
 #pragma once
 
 #include "tuning_runner.h"
@@ -32,8 +33,13 @@ public:
     QTableWidget* runsTable() const { return m_runsTable; }
     GainEditor* gainEditor(const QString& name) const { return m_editors.value(name); }
     QString statusText() const;
-    // Shows the preset in the test-move fields and hands it to the runner.
+    // Shows the preset in the test-move fields and hands it to the runner; the amplitude is the caller's.
     void setTestMove(const TestMove& move);
+    // The amplitude proposed for the chosen preset from the drive's values (TestMove::proposedAmplitude); the
+    // Amplitude field follows it until the user types a value or a caller sets a move (Propose follows again).
+    int proposedAmplitude() const;
+    void useProposedAmplitude();
+    QString warningText() const; // empty while hidden: "ICMD reached ILIM in run n..."
     void saveGainsAs();
 
 private:
@@ -41,6 +47,8 @@ private:
     QWidget* buildTestMove();
     QWidget* buildTune();
     void applyTestMove();
+    void updateProposal();
+    TestMove::DriveValues proposalValues() const;
     void addRun(const TuningRun& run);
     void updateButtons();
     void setStatus(const QString& text);
@@ -62,6 +70,9 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QLabel* m_warning = nullptr;
+    QLabel* m_proposal = nullptr;
+    bool m_followProposal = true;
+    bool m_settingFields = false; // the fields change from code, not from the user
 };
 
 } // namespace app

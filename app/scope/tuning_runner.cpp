@@ -56,6 +56,7 @@ void TuningRunner::readGains() {
     const auto quiet = serialport::Bds5Session::Echo::Quiet;
     m_readId = send(QStringLiteral("P ") + kNumericGains.join(QLatin1Char(' ')), quiet);
     m_readSwitchesId = send(QStringLiteral("P ") + kSwitches.join(QLatin1Char(' ')), quiet);
+    m_readDriveValuesId = send(QStringLiteral("P ") + TestMove::proposalInputs().join(QLatin1Char(' ')), quiet);
 }
 
 void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response) {
@@ -66,6 +67,14 @@ void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response
         emit gainRefused(name, why);
         readGains(); // the drive's value is the truth
         return;
+    }
+    if (id == m_readDriveValuesId) {
+        const QStringList names = TestMove::proposalInputs();
+        const QStringList words = response.lines.join(QLatin1Char(' ')).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        bool ok = false;
+        for (int i = 0; i < std::min(words.size(), names.size()); ++i)
+            if (const double v = words[i].toDouble(&ok); ok) m_driveValues[names[i]] = v;
+        return emit driveValuesRead();
     }
     if (id == m_readId || id == m_readSwitchesId) {
         const QStringList& names = id == m_readId ? kNumericGains : kSwitches;

@@ -38,8 +38,10 @@ public:
 
     // Sends "NAME=value"; gainConfirmed() or gainRefused() follows when the drive's prompt returns.
     void setGain(const QString& name, int value);
-    void readGains(); // P of every tuning gain; gainsRead() follows
+    void readGains(); // P of every tuning gain, then of the test move's inputs; gainsRead(), driveValuesRead()
     const QMap<QString, int>& gains() const { return m_gains; }
+    // The drive's values a test move's amplitude is proposed from (TestMove::proposalInputs), as last read.
+    const TestMove::DriveValues& driveValues() const { return m_driveValues; }
 
     void setTestMove(const TestMove& move) { m_move = move; }
     const TestMove& testMove() const { return m_move; }
@@ -59,6 +61,7 @@ signals:
     void gainConfirmed(const QString& name, int value);
     void gainRefused(const QString& name, const QString& why);
     void gainsRead(const QMap<QString, int>& gains);
+    void driveValuesRead();
     void runStarted(int number);
     void progress(int done, int total);
     void runFinished(const app::TuningRun& run);
@@ -70,8 +73,7 @@ private:
     void startRun();
     void onRecorded(const serialport::Bds5TransferResult& result);
     void onAnswer(quint64 id, const serialport::Bds5Response& response);
-    quint64 send(const QString& line,
-                 serialport::Bds5Session::Echo echo = serialport::Bds5Session::Echo::Shown);
+    quint64 send(const QString& line, serialport::Bds5Session::Echo echo = serialport::Bds5Session::Echo::Shown);
 
     DriveConnection& m_connection;
     TestMove m_move;
@@ -80,6 +82,8 @@ private:
     QHash<quint64, QString> m_pendingGains; // id -> "KV=2400"
     quint64 m_readId = 0;
     quint64 m_readSwitchesId = 0;
+    quint64 m_readDriveValuesId = 0;
+    TestMove::DriveValues m_driveValues;
     quint64 m_tuneId = 0;
     QPointer<serialport::Bds5RecordPlay> m_record;
     QList<TuningRun> m_runs;

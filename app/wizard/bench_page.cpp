@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QVBoxLayout>
 
 namespace app {
@@ -158,6 +159,13 @@ QPushButton* BenchPage::toggleFor(const QString& name) const {
 
 QString BenchPage::log() const {
     return m_log->toPlainText();
+}
+
+QString BenchPage::readoutText(const QString& name) const {
+    const QLabel* label = m_values.value(name);
+    if (!label || isSwitch(name)) return {};
+    static const QRegularExpression kMarkup(QStringLiteral("<[^>]*>"));
+    return QString(label->text()).remove(kMarkup);
 }
 
 } // namespace app

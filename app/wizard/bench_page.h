@@ -40,6 +40,8 @@ public:
     QPushButton* actionButton(const QString& label) const;
     QPushButton* toggleFor(const QString& name) const;
     QString log() const;
+    // What the readout shows for a number ("BAUD  9600"), as text without its markup; empty for a lamp.
+    QString readoutText(const QString& name) const;
 
 private:
     QWidget* makeReadout();

@@ -34,7 +34,7 @@ ParameterPage::ParameterPage(WizardContext context, const QString& title, const 
     : QWizardPage(parent), m_context(context), m_names(names) {
     setTitle(title);
     setSubTitle(subTitle);
-    auto* outer = new QVBoxLayout(this);
+    auto* outer = m_outer = new QVBoxLayout(this);
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -103,6 +103,14 @@ void ParameterPage::setPreview(Preview preview) {
     m_previewFunction = std::move(preview);
     m_preview->setVisible(bool(m_previewFunction));
     updatePreview();
+}
+
+void ParameterPage::addWidget(QWidget* widget) {
+    m_outer->insertWidget(m_outer->indexOf(m_preview), widget);
+}
+
+void ParameterPage::readAgain() {
+    m_context.sync.readNow(m_names);
 }
 
 void ParameterPage::initializePage() {

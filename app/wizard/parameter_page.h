@@ -12,6 +12,7 @@
 #include <functional>
 
 class QLabel;
+class QVBoxLayout;
 class QWidget;
 
 namespace app {
@@ -26,6 +27,10 @@ public:
                   QWidget* parent = nullptr);
 
     void setPreview(Preview preview);
+    // A widget of the page's own between the variables and the preview (the Motor Setup page's motor list).
+    void addWidget(QWidget* widget);
+    // Reads the page's variables from the drive again (after the simulated motor was swapped).
+    void readAgain();
     const QStringList& names() const { return m_names; }
     // What the page's editor for name shows ("7500", "ON"); setText() types into it as a user would.
     QString text(const QString& name) const;
@@ -45,6 +50,7 @@ private:
     QHash<QString, QWidget*> m_editors;
     QHash<QString, QLabel*> m_problems;
     QLabel* m_preview = nullptr;
+    QVBoxLayout* m_outer = nullptr;
     Preview m_previewFunction;
 };
 

@@ -2,6 +2,7 @@
 #include "setup_wizard.h"
 
 #include "bench_page.h"
+#include "motor_choice.h"
 #include "parameter_page.h"
 #include "reset_page.h"
 #include "summary_page.h"
@@ -112,10 +113,11 @@ void SetupWizard::addParameterPages() {
     });
     addParameterPage(tr("Machine Setup \u2014 Limits"), tr("Travel, speed, acceleration and current limits."),
                      s("PMAX PMIN PLIM VMAX AMAX ILIM IMAX PEMAX VOSPD"));
-    addParameterPage(tr("Motor Setup"),
-                     tr("The motor's current and protection settings. On the simulated drive, choose the "
-                        "reference motor in the I/O panel's bench."),
-                     s("ICONT IFOLD FOLD VMAX VOSPD KP KV KVI"));
+    ParameterPage* motor = addParameterPage(tr("Motor Setup"), tr("The motor and its current and protection settings."),
+                                            s("ICONT IFOLD FOLD VMAX VOSPD KP KV KVI"));
+    m_motorChoice = new MotorChoice(m_context->connection, motor);
+    motor->addWidget(m_motorChoice);
+    connect(m_motorChoice, &MotorChoice::motorChanged, motor, &ParameterPage::readAgain);
     addParameterPage(tr("BDS5 Modes"), tr("Operating mode switches."),
                      s("PL PROP TQ GEAR EXTLOOP RAMP ROTARY ZERO CLAMP DIR"));
     addParameterPage(tr("Communications"), tr("Serial line settings. A new BAUD takes effect at once."),

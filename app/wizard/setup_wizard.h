@@ -13,6 +13,7 @@
 namespace app {
 
 class BenchPage;
+class MotorChoice;
 class ParameterPage;
 class ResetPage;
 class SummaryPage;
@@ -31,6 +32,7 @@ public:
     const QList<BenchPage*>& benchPages() const { return m_benchPages; }
     SummaryPage* summaryPage() const { return m_summary; }
     ResetPage* resetPage() const { return m_reset; }
+    MotorChoice* motorChoice() const { return m_motorChoice; } // on the Motor Setup page
     WizardChanges& changes() const { return *m_changes; }
     VariableModel& model() const { return *m_model; }
     // The id of the page with this title, -1 if none.
@@ -50,6 +52,7 @@ private:
     QList<BenchPage*> m_benchPages;
     SummaryPage* m_summary = nullptr;
     ResetPage* m_reset = nullptr;
+    MotorChoice* m_motorChoice = nullptr;
 };
 
 } // namespace app

@@ -1,17 +1,21 @@
 // The I/O panel (issue 7) against the simulated BDS5: toggling I1 in the panel fires the manual's A$ I1 ON
 // alarm (L4783-4790, example 43: DIS, OUT = 0, B) — the outputs go dark in the panel and the drive says so —
-// and the bench goes through SimulatorLink::control, never the serial line. Plus the DEP-01's display.
+// and the bench goes through SimulatorLink::control, never the serial line; a load torque on the bench is held
+// by the motor's current, and Power Cycle brings the sign-on back with the drive disabled. Plus the DEP-01.
 #include "app/dep01/dep01_panel.h"
 #include "app/dep01/dep01_screen.h"
 #include "app/drive/drive_connection.h"
 #include "app/io/io_panel.h"
 #include "app/main_window.h"
 
+#include "drive_core/bds5/bds5_drive.h"
 #include "serialport/bds5_session.h"
 
 #include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -88,6 +92,42 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!answer.isEmpty(), kDriveTimeoutMs);
         // OUT and ACTIVE both 0, and the drive's status word: outputs off, drive disabled.
         QCOMPARE(answer.join(' ').simplified(), QStringLiteral("0 0 OFF"));
+    }
+
+    void aLoadTorqueIsHeldByTheMotorsCurrentUntilPowerCycle() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::IoPanel& panel = *window.ioPanel();
+        panel.show();
+        for (const char* line : {"PLIM OFF", "EN"}) window.connection().sendCommand(QString::fromLatin1(line));
+        QTRY_VERIFY_WITH_TIMEOUT(panel.readoutText().startsWith(QStringLiteral("ACTIVE")), kDriveTimeoutMs);
+        // "I 2.00 A" -> 2.0: the current the bench reports.
+        auto amps = [&panel] {
+            static const QRegularExpression kCurrent(QStringLiteral(" I (-?[0-9.]+) A"));
+            return kCurrent.match(panel.readoutText()).captured(1).toDouble();
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(amps()) < 0.2, kDriveTimeoutMs);
+
+        // 1.5 N m on the shaft of REF-MEDIUM (0.5 N m/A): holding position takes 3 A (plus friction).
+        QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
+        panel.loadTorqueField()->setValue(1.5);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(std::abs(amps()) - 3.0) < 0.3, kDriveTimeoutMs);
+        QVERIFY2(panel.readoutText().startsWith(QStringLiteral("ACTIVE")), qPrintable(panel.readoutText()));
+        QVERIFY2(sent.isEmpty(), "the bench does not use the serial line");
+
+        // Power Cycle: the drive signs on again, powered up disabled, with no current.
+        QSignalSpy received(&window.connection(), &app::DriveConnection::rawReceived);
+        QTest::mouseClick(panel.powerCycleButton(), Qt::LeftButton);
+        auto signedOn = [&received] {
+            QByteArray bytes;
+            for (const QList<QVariant>& r : received) bytes += r.first().toByteArray();
+            return bytes.contains(drive_core::bds5::kSignOn);
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(signedOn(), kDriveTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(panel.readoutText().startsWith(QStringLiteral("inactive")), kDriveTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(amps()) < 0.2, kDriveTimeoutMs);
     }
 
     void theDep01ShowsTwoFortyColumnLinesWithCursorAddressing() {

@@ -2,7 +2,8 @@
 // with RECORD/PLAY is plotted (every sample in the graphs, a plot that is not blank), its measurements
 // match figures computed here independently from the same samples, .CSV and View Data hold the same
 // samples, the drive's ERR 90 reaches the status bar, and the tuning loop sends KV, records again and
-// keeps the previous run as an overlay. TUNE is checked against the bandwidth it was asked for.
+// keeps the previous run as an overlay, with KV changing the response as the loop's physics predicts. TUNE is
+// checked against the bandwidth it was asked for.
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/gain_editor.h"
@@ -16,6 +17,9 @@
 #include <qcustomplot.h>
 
 #include <QDialog>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
 #include <QSet>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -48,10 +52,12 @@ serialport::Bds5RecordPlan velocityStep() {
     return plan;
 }
 
-// Independent step figures: the plateau of the command, the mean of its last tenth, 10/90 % crossings.
+// Independent step figures: the plateau of the command, the mean of its last tenth, 10/90 % crossings, and
+// the first sample from which the response stays within 2 % of the step.
 struct Expected {
     double rise_ms = -1;
     double overshoot_pct = 0;
+    double settle_ms = -1; // -1: still outside the 2 % band at the window's end
 };
 Expected expectedStep(const std::vector<double>& cmd, const std::vector<double>& y, double dt) {
     Expected e;
@@ -80,6 +86,10 @@ Expected expectedStep(const std::vector<double>& cmd, const std::vector<double>&
     double peak = final;
     for (std::size_t i = start; i < end; ++i) peak = step > 0 ? std::max(peak, y[i]) : std::min(peak, y[i]);
     e.overshoot_pct = 100 * std::abs(peak - final) / std::abs(step);
+    // Settled: from the step's start, walking back from the window's end while within 2 % of the step.
+    std::size_t settled = end;
+    while (settled > start && std::abs(y[settled - 1] - final) <= 0.02 * std::abs(step)) --settled;
+    if (settled < end) e.settle_ms = double(settled - start) * dt * 1000;
     return e;
 }
 
@@ -144,6 +154,9 @@ private slots:
         QCOMPARE(table->cell(QStringLiteral("VFB"), QStringLiteral("Rise (ms)")), QString::number(e.rise_ms, 'f', 1));
         QCOMPARE(table->cell(QStringLiteral("VFB"), QStringLiteral("Overshoot %")),
                  QString::number(e.overshoot_pct, 'f', 1));
+        QVERIFY(e.settle_ms > 0);
+        QCOMPARE(table->cell(QStringLiteral("VFB"), QStringLiteral("Settle (ms)")),
+                 QString::number(e.settle_ms, 'f', 1));
         QCOMPARE(table->cell(QStringLiteral("VCMD"), QStringLiteral("Max")), QStringLiteral("1000"));
 
         // Cursors read the samples: at 120 ms the jog has ended (J 0 at 100 ms is well before).
@@ -165,6 +178,53 @@ private slots:
         data->close();
     }
 
+    // Scope > Export Plot: the file's suffix picks the format; each file holds the recorded step.
+    void exportWritesPngSvgAndPdf() {
+        Window w;
+        QVERIFY(w.enabled());
+        app::ScopeController& scope = w.window.scopeController();
+        QTemporaryDir dir;
+        const QString empty = dir.filePath(QStringLiteral("empty.pdf")); // axes only, to compare with
+        QVERIFY(scope.exportTo(empty));
+        QSignalSpy shown(&scope, &app::ScopeController::captureShown);
+        scope.record(velocityStep());
+        QVERIFY(shown.wait(kDriveTimeoutMs));
+        QVERIFY(QTest::qWaitForWindowExposed(scope.view()->plot()));
+
+        const QString png = dir.filePath(QStringLiteral("scope.png"));
+        QVERIFY(scope.exportTo(png));
+        QCOMPARE(w.window.statusBar()->currentMessage(), QStringLiteral("Exported the plot to scope.png"));
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), scope.view()->plot()->customPlot()->size());
+        QVERIFY2(distinctColours(image) > 20, "the exported PNG is blank");
+
+        const QString svg = dir.filePath(QStringLiteral("scope.svg"));
+        QVERIFY(scope.exportTo(svg));
+        QFile svgFile(svg);
+        QVERIFY(svgFile.open(QIODevice::ReadOnly));
+        const QString drawing = QString::fromUtf8(svgFile.readAll());
+        QVERIFY(drawing.startsWith(QStringLiteral("<svg")) || drawing.contains(QStringLiteral("<svg ")));
+        // One polyline per channel, a point for each of the 160 samples in view.
+        const QRegularExpression polyline(QStringLiteral("<polyline[^>]*points=\"([^\"]*)\""));
+        QList<int> points;
+        for (auto it = polyline.globalMatch(drawing); it.hasNext();)
+            points << int(it.next().captured(1).split(QLatin1Char(' '), Qt::SkipEmptyParts).size());
+        QCOMPARE(points, (QList<int>{160, 160}));
+        QVERIFY(drawing.contains(QStringLiteral("VFB [VEL]")));
+
+        const QString pdf = dir.filePath(QStringLiteral("scope.pdf"));
+        QVERIFY(scope.exportTo(pdf));
+        QFile pdfFile(pdf);
+        QVERIFY(pdfFile.open(QIODevice::ReadOnly));
+        const QByteArray document = pdfFile.readAll();
+        QVERIFY(document.startsWith("%PDF-"));
+        // The two graphs' 320 points are drawn as vectors: far more than the axes of the empty plot.
+        const qint64 emptySize = QFileInfo(empty).size();
+        QVERIFY2(document.size() > emptySize + 1000,
+                 qPrintable(QStringLiteral("%1 vs %2 bytes").arg(document.size()).arg(emptySize)));
+    }
+
     void tooManyPointsShowsTheDrivesError() {
         Window w;
         QVERIFY(w.enabled());
@@ -183,10 +243,16 @@ private slots:
         Window w;
         QVERIFY(w.enabled());
         app::TuningPanel* panel = w.window.scopeController().tuningPanel();
+        app::TuningRunner& runner = panel->runner();
+        // The velocity loop alone (PL OFF) and a command that is a step (ACC high), small enough that ICMD stays
+        // below ILIM: the response is then the loop's. Run 1 at KV 1000, run 2 at KV 3000.
+        runner.setGain(QStringLiteral("PL"), 0);
+        runner.setGain(QStringLiteral("KV"), 1000);
+        w.window.connection().sendCommand(QStringLiteral("ACC=1000000"));
         app::TestMove move;
+        move.amplitude = 200;
         move.durationMs = 50;
         panel->setTestMove(move);
-        app::TuningRunner& runner = panel->runner();
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.runOnce();
         QVERIFY(runs.wait(kDriveTimeoutMs));
@@ -207,6 +273,23 @@ private slots:
         const scope::Capture& second = runner.runs()[1].capture;
         const Expected e = expectedStep(second.channels[0].values, second.channels[1].values, second.interval_s);
         QCOMPARE(panel->runsTable()->item(1, 3)->text(), QString::number(e.rise_ms, 'f', 1));
+        // What physics predicts. The integrating loop is ICMD = KV'(KVI' integral(VCMD - VFB) - VFB), so the closed
+        // loop is a c / (s^2 + a s + a c) with a proportional to KV and c = KVI's corner: wn = sqrt(a c) and
+        // zeta = sqrt(a / c) / 2 grow as sqrt(KV). KV 2000 is critically damped at the power-up KVI
+        // (bds5_loop_scaling.h), so KV 1000 gives zeta 0.71 (overshoot 4.3 %, rise 15.6 ms in continuous time)
+        // and KV 3000 gives zeta 1.22 (no overshoot, rise 18.8 ms): the higher KV overshoots less and, past
+        // critical damping, rises more slowly. Read from the runs table, as the user compares them.
+        QVERIFY(!runner.runs()[0].currentSaturated && !runner.runs()[1].currentSaturated);
+        const auto cellValue = [panel](int row, int column) {
+            return panel->runsTable()->item(row, column)->text().toDouble();
+        };
+        const double overshoot1 = cellValue(0, 2), overshoot2 = cellValue(1, 2);
+        const double rise1 = cellValue(0, 3), rise2 = cellValue(1, 3);
+        qInfo("KV 1000: overshoot %.1f %%, rise %.1f ms; KV 3000: overshoot %.1f %%, rise %.1f ms", overshoot1, rise1,
+              overshoot2, rise2);
+        QVERIFY2(overshoot1 > 2.0 && overshoot2 < 1.0,
+                 qPrintable(QStringLiteral("%1 %2").arg(overshoot1).arg(overshoot2)));
+        QVERIFY2(rise2 > 1.1 * rise1, qPrintable(QStringLiteral("%1 %2").arg(rise1).arg(rise2)));
 
         // The drive holds the new KV (read back with P), and undo sends run 1's value again.
         QSignalSpy read(&runner, &app::TuningRunner::gainsRead);

@@ -1,18 +1,25 @@
 // The setup wizard (issue 7) against the simulated BDS5: every parameter page reads its variables from
 // the drive, an edit on each page is held (nothing sent) until Send Variables, then reaches the drive and
-// reads back; the changes save as .VAR; the output test toggles an output at once.
+// reads back; the changes save as .VAR; the output test toggles an output at once; the Communicate and Drive
+// Feedback readouts show the drive's answers, the units page previews the conversion as a user types, and the
+// Motor Setup page swaps the simulated motor (its ICONT read anew, the I/O panel showing the same motor).
 #include "app/drive/drive_connection.h"
+#include "app/io/io_panel.h"
 #include "app/main_window.h"
 #include "app/variables/variable_model.h"
 #include "app/wizard/bench_page.h"
+#include "app/wizard/motor_choice.h"
 #include "app/wizard/parameter_page.h"
 #include "app/wizard/setup_wizard.h"
 #include "app/wizard/summary_page.h"
 #include "app/wizard/wizard_changes.h"
 
+#include "drive_core/bds5/bds5_drive.h"
 #include "drive_core/catalog/bds5_catalog.h"
+#include "drive_core/physics/motor_parameters.h"
 #include "serialport/bds5_session.h"
 
+#include <QComboBox>
 #include <QFile>
 #include <QPushButton>
 #include <QSettings>
@@ -131,6 +138,117 @@ private slots:
         QTest::mouseClick(outputs->toggleFor(QStringLiteral("O2")), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(outputs->log().contains(QStringLiteral("--> O2 1")), kDriveTimeoutMs);
         QTRY_COMPARE_WITH_TIMEOUT(wizard.model().value(QStringLiteral("O2")), QStringLiteral("1"), kDriveTimeoutMs);
+    }
+
+    void communicateAndFeedbackShowTheDrivesAnswers() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::SetupWizard wizard(window.connection(), &window);
+        wizard.show();
+        app::BenchPage* communicate = wizard.benchPages().first();
+        QCOMPARE(communicate->title(), QStringLiteral("Communicate with the BDS5"));
+        QTest::mouseClick(communicate->actionButton(QStringLiteral("Test")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(communicate->log().contains(QStringLiteral("--> P BAUD ADDR")), kDriveTimeoutMs);
+        // The simulated drive's UART runs at 9600 baud, address 0 (power-up values).
+        QTRY_COMPARE_WITH_TIMEOUT(communicate->readoutText(QStringLiteral("BAUD")), QStringLiteral("BAUD  9600"),
+                                  kDriveTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(communicate->readoutText(QStringLiteral("ADDR")), QStringLiteral("ADDR  0"),
+                                  kDriveTimeoutMs);
+
+        // Drive Feedback while the motor jogs at 100 RPM: VFB shows about 100 and PFB keeps counting.
+        window.connection().sendCommand(QStringLiteral("PLIM=0"));
+        window.connection().sendCommand(QStringLiteral("EN"));
+        window.connection().sendCommand(QStringLiteral("J 100"));
+        app::BenchPage* feedback = nullptr;
+        for (app::BenchPage* page : wizard.benchPages())
+            if (page->title() == QStringLiteral("Drive Feedback")) feedback = page;
+        QVERIFY(feedback);
+        while (wizard.currentPage() != feedback) wizard.next();
+        auto number = [feedback](const char* name) {
+            return feedback->readoutText(QString::fromLatin1(name)).section(QStringLiteral("  "), 1).toDouble();
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(number("VFB") - 100) < 5, kDriveTimeoutMs);
+        const double pfb = number("PFB");
+        // 100 RPM is 6.8 counts a millisecond (4096 a turn): PFB moves on between polls.
+        QTRY_VERIFY_WITH_TIMEOUT(number("PFB") > pfb + 500, kDriveTimeoutMs);
+        window.connection().sendCommand(QStringLiteral("J 0"));
+    }
+
+    void theUnitsPagePreviewsTheConversionAsTyped() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::SetupWizard wizard(window.connection(), &window);
+        wizard.show();
+        app::ParameterPage* units = wizard.parameterPages().first();
+        QVERIFY(units->title().contains(QStringLiteral("Units")));
+        while (wizard.currentPage() != units) wizard.next();
+        // The power-up units: counts, RPM, RPM/s and percent.
+        QTRY_VERIFY_WITH_TIMEOUT(units->previewText().contains(QStringLiteral("1 velocity unit = 1 RPM")),
+                                 kDriveTimeoutMs);
+        QVERIFY2(units->previewText().contains(QStringLiteral("1 position unit = 1 counts")),
+                 qPrintable(units->previewText()));
+        // Revolutions for position (PNUM 4096) and RPS for velocity (VNUM x 60): shown at once, nothing sent.
+        units->setText(QStringLiteral("PNUM"), QStringLiteral("4096"));
+        units->setText(QStringLiteral("VNUM"), QString::number(44739 * 60));
+        QVERIFY2(units->previewText().contains(QStringLiteral("1 position unit = 4096 counts")),
+                 qPrintable(units->previewText()));
+        QVERIFY2(units->previewText().contains(QStringLiteral("1 velocity unit = 60 RPM")),
+                 qPrintable(units->previewText()));
+        QCOMPARE(wizard.changes().changedNames().size(), 2);
+    }
+
+    void motorSetupSwapsTheSimulatedMotor() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::SetupWizard wizard(window.connection(), &window);
+        wizard.show();
+        const int id = wizard.pageIdOf(QStringLiteral("Motor Setup"));
+        QVERIFY(id >= 0);
+        while (wizard.currentId() != id) wizard.next();
+        app::MotorChoice* choice = wizard.motorChoice();
+        QVERIFY(choice->isVisible() && choice->isSimulated() && choice->list()->isEnabled());
+        QVERIFY(choice->note().startsWith(QStringLiteral("Simulated drive")));
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard.model().value(QStringLiteral("ICONT")).isEmpty(), kDriveTimeoutMs);
+        const QString before = choice->list()->currentText();
+        const QString icontBefore = wizard.model().value(QStringLiteral("ICONT"));
+
+        // Another reference motor: the simulated drive powers up with it (its sign-on on the wire), the page
+        // reads its variables again, and the I/O panel's bench shows the same motor.
+        QString name;
+        for (const auto& m : drive_core::physics::referenceMotors())
+            if (QString::fromLatin1(m.name.data(), qsizetype(m.name.size())) != before)
+                name = QString::fromLatin1(m.name.data(), qsizetype(m.name.size()));
+        QVERIFY(!name.isEmpty());
+        QSignalSpy changed(choice, &app::MotorChoice::motorChanged);
+        QSignalSpy received(&window.connection(), &app::DriveConnection::rawReceived);
+        QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
+        const int index = choice->list()->findText(name);
+        choice->list()->setCurrentIndex(index);
+        emit choice->list()->activated(index); // as a user's pick
+        QVERIFY(changed.wait(kDriveTimeoutMs));
+        QCOMPARE(changed.first().first().toString(), name);
+        const auto allOf = [](const QSignalSpy& spy) {
+            QByteArray bytes;
+            for (const QList<QVariant>& s : spy) bytes += s.first().toByteArray();
+            return bytes;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(allOf(received).contains(drive_core::bds5::kSignOn), kDriveTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(allOf(sent).contains("P ICONT"), kDriveTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(wizard.model().value(QStringLiteral("ICONT")), icontBefore, kDriveTimeoutMs);
+        // The I/O panel's bench shows the same motor.
+        auto* io = window.findChild<app::IoPanel*>();
+        QVERIFY(io);
+        QComboBox* ioMotor = nullptr;
+        for (QComboBox* box : io->findChildren<QComboBox*>())
+            if (box->findText(name) >= 0) ioMotor = box;
+        QVERIFY(ioMotor);
+        QTRY_COMPARE_WITH_TIMEOUT(ioMotor->currentText(), name, kDriveTimeoutMs);
     }
 };
 

@@ -1,7 +1,8 @@
 // The variable browser (issue 7): the catalog as a grouped model, edit validation naming the drive's own
 // error, and — against the simulated BDS5 — an edit that reaches the drive and comes back, an out-of-range
 // edit refused before sending, a write the drive itself refuses, live polling of the rows in view, the
-// watch list and "Copy as .VAR".
+// watch list and "Copy as .VAR", the search filter, and polling that pauses while a program runs (no prompt).
+#include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
 #include "app/drive/terminal_widget.h"
 #include "app/main_window.h"
@@ -12,6 +13,9 @@
 
 #include "serialport/bds5_session.h"
 
+#include <QAction>
+#include <QLabel>
+#include <QLineEdit>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -47,6 +51,24 @@ std::shared_ptr<Asked> ask(MainWindow& window, const QString& line) {
                          asked->done = true;
                      });
     return asked;
+}
+// The variable names the All Variables view shows (groups expanded), as a user scrolling it would read them.
+QStringList shownNames(const QAbstractItemModel& model, const QModelIndex& parent = {}) {
+    QStringList names;
+    for (int r = 0; r < model.rowCount(parent); ++r) {
+        const QModelIndex index = model.index(r, 0, parent);
+        if (model.rowCount(index) > 0)
+            names << shownNames(model, index);
+        else
+            names << index.data().toString();
+    }
+    return names;
+}
+
+QByteArray allSent(const QSignalSpy& spy) {
+    QByteArray bytes;
+    for (const QList<QVariant>& s : spy) bytes += s.first().toByteArray() + '\n';
+    return bytes;
 }
 } // namespace
 
@@ -170,6 +192,60 @@ private slots:
         dock.editValue(QStringLiteral("EXTLOOP"), QStringLiteral("ON"));
         QTRY_VERIFY_WITH_TIMEOUT(dock.statusText().startsWith(QStringLiteral("The drive refused EXTLOOP 1: ERR 51")),
                                  kDriveTimeoutMs);
+    }
+
+    void searchNarrowsTheRows() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        app::VariablesDock& dock = *window.variablesDock();
+        dock.show();
+        const QAbstractItemModel& shown = *dock.allView()->model();
+        const QStringList all = shownNames(shown);
+        QVERIFY(all.contains(QStringLiteral("ACC")) && all.contains(QStringLiteral("KVI")));
+        QTest::keyClicks(dock.searchField(), QStringLiteral("KV"));
+        const QStringList found = shownNames(shown);
+        QVERIFY2(found.contains(QStringLiteral("KV")) && found.contains(QStringLiteral("KVI")),
+                 qPrintable(found.join(' ')));
+        QVERIFY2(!found.contains(QStringLiteral("ACC")), qPrintable(found.join(' ')));
+        QVERIFY(found.size() < all.size() / 10);
+        dock.searchField()->clear();
+        QCOMPARE(shownNames(shown), all);
+    }
+
+    void pollingPausesWhileAProgramRuns() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        app::VariablesDock& dock = *window.variablesDock();
+        dock.show();
+        dock.reveal(QStringLiteral("VFB"));
+        QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
+        QTRY_VERIFY_WITH_TIMEOUT(allSent(sent).contains("P "), kDriveTimeoutMs); // the rows in view are polled
+
+        // A program that runs until told otherwise: while it runs the drive shows no prompt to answer P.
+        serialport::Bds5Session* session = window.connection().session();
+        for (const char* line : {">BDS", "7$", "D 100", "GOTO 7", "B"}) session->send(QString::fromLatin1(line));
+        session->sendEscape();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        window.driveActions().run(7);
+        QTRY_VERIFY_WITH_TIMEOUT(session->mode() == serialport::Bds5Mode::Running, kDriveTimeoutMs);
+        const QString paused = QStringLiteral("paused: the drive runs a program (no prompt)");
+        auto pauseShown = [&dock, &paused] {
+            for (const QLabel* label : dock.findChildren<QLabel*>())
+                if (label->text() == paused && label->isVisible()) return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(pauseShown(), kDriveTimeoutMs);
+        sent.clear();
+        QTest::qWait(1500); // many poll intervals
+        QVERIFY2(!allSent(sent).contains("P "), allSent(sent).constData());
+
+        window.driveActions().breakAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(session->mode() == serialport::Bds5Mode::Interactive && ready(window),
+                                 kDriveTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!pauseShown() && allSent(sent).contains("P "), kDriveTimeoutMs); // polling again
     }
 };
 
