@@ -34,6 +34,18 @@ public:
     // N: the absolute position becomes position; returns the position error it cancelled (SN).
     double normalize(double position_counts);
 
+    // SENSOR (JM4, L516), per the SP bits latched when a motion starts (L1612-1631). holdForSensor: the
+    // motion just commanded from rest waits for SENSOR (bits 5+4). onSensor: what SENSOR does to the motion
+    // just commanded once it runs at top speed (Stop: at any speed).
+    enum class SensorAction { None, Decelerate, Depth, Stop };
+    void holdForSensor() { m_generator.setHeld(true); }
+    void onSensor(SensorAction action, double decel_cps2, double depth_counts = 0);
+    // SENSOR asserted (its edge): releases a held start, else does the motion's SensorAction.
+    void sensor();
+    bool waitingForSensor() const { return m_generator.held(); }
+    // The following error the loop settles to at a constant speed (adaptive depth, #B1).
+    double steadyError_counts(double velocity_cps) const;
+
     // Advances dt; returns true when the following error exceeds the SF trip point in a position mode
     // (the caller raises #E1 and sets SM0).
     bool step(double dt_s);
@@ -44,6 +56,7 @@ public:
     bool full() const { return m_generator.full(); }
     // ';' is satisfied at constant speed or at rest.
     bool atConstantSpeed() const { return !moving() || m_generator.acceleration() == 0; }
+    bool atTopSpeed() const { return moving() && !waitingForSensor() && m_generator.acceleration() == 0; }
     double commanded_counts() const { return m_generator.position(); }
     double target_counts() const { return m_generator.finalPosition(); }
     double actual_counts() const { return m_generator.position() - m_error_counts; }
@@ -60,6 +73,9 @@ private:
     double m_error_counts = 0;
     double m_trip_counts = 2048;
     bool m_forward = true;
+    SensorAction m_sensorAction = SensorAction::None;
+    double m_sensorDecel_cps2 = 1;
+    double m_depth_counts = 0;
 };
 
 } // namespace drive_core::pmc960

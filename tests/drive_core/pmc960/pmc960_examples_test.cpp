@@ -245,12 +245,27 @@ TEST(Pmc960Examples, Ex25ContourSeparateLines) { // L2239-2247
     EXPECT_EQ(t.type("3200\r"), prompted("3200}"));
 }
 
-TEST(Pmc960Examples, Ex26ContourSensorStart) {
+TEST(Pmc960Examples, Ex26ContourSensorStart) { // L2255-2264: the first segment waits for SENSOR
     TestDrive t;
     t.enable();
     EXPECT_EQ(t.type("SY30\r"), prompted("SY30")); // SY read as SP (digest §11.2 #20)
     EXPECT_EQ(t.type("SP?"), prompted("SP?30"));
-    EXPECT_EQ(t.type("SY0\r"), prompted("SY0"));
+    // R T1Y1 T2Y2<cr>: +192 counts, then +512; the second is queued behind the held first.
+    EXPECT_EQ(t.type("R1C03200\r"), prompted("R}1C0}3200"));
+    EXPECT_EQ(t.type("SY0\r", 100ms), prompted("SY0"));
+    EXPECT_EQ(t.type("G!"), prompted("G!0")); // no SENSOR yet: nothing has moved
+    EXPECT_EQ(t.type("R"), "R");              // both segments still to run: no } for T3Y3
+    EXPECT_EQ(t.wait(100ms), "");
+    t.drive.setLine(Pmc960Line::Sensor, true); // segment 1 starts; segment 2 follows without SENSOR
+    std::string handshake;                     // the } once segment 1 has run out and segment 2 runs
+    for (int ms = 0; ms < 50 && handshake.empty(); ++ms) handshake = t.wait(1ms);
+    EXPECT_EQ(handshake, "}");
+    EXPECT_TRUE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("3200\r"), prompted("3200")); // T3Y3 waits behind segment 2: no } for it
+    EXPECT_TRUE(t.drive.state().motion.full());
+    t.drive.setLine(Pmc960Line::Sensor, false);
+    t.wait(300ms);
+    EXPECT_EQ(t.type("G!"), prompted("G!1216"));
 }
 
 TEST(Pmc960Examples, ErrorsFromTheBreakMatrix) { // 5.3.5: FAULT' #E3, BREAK' #C7
