@@ -65,6 +65,21 @@ TEST(Pmc960Examples, Ex05Dwell) {
     EXPECT_EQ(t.wait(30ms), kPrompt);
 }
 
+TEST(Pmc960Examples, Ex05DwellAfterTopSpeed) { // D300;<cr>: 300 ms after top speed
+    TestDrive t;
+    t.enable();
+    t.type("I100000+\r"); // 10 ms to V400 at A4000
+    EXPECT_EQ(t.type("D300;"), "D300;");
+    EXPECT_EQ(t.wait(5ms), ""); // still accelerating
+    std::string handshake;
+    for (int ms = 0; ms < 20 && handshake.empty(); ++ms) handshake = t.wait(1ms);
+    EXPECT_EQ(handshake, "}");
+    EXPECT_EQ(t.drive.state().motionBits() & 0x0C, 0x0C); // MOTION, TOP VELOCITY
+    EXPECT_EQ(t.type("\r"), "");                          // the dwell starts now
+    EXPECT_EQ(t.wait(299ms), "");
+    EXPECT_EQ(t.wait(8ms), kPrompt); // on the 4 ms clock: 300 to 304 ms
+}
+
 TEST(Pmc960Examples, Ex06And07CallAndExit) {
     TestDrive t;
     t.load("@M\rFA\rOB2:2\rQ\r@A\rOB1:1\rE8:8\rOB4:4\rE\r");
@@ -229,10 +244,21 @@ TEST(Pmc960Examples, Ex23And24ContourHandshakes) {
     EXPECT_EQ(t.type("R"), "R}");
     EXPECT_EQ(t.type("1C0"), "1C0}");  // T1Y1: +192 counts in 1.33 ms; next accepted at once
     EXPECT_EQ(t.type("3200"), "3200"); // T2Y2 waits until segment 1 runs out (point A)
-    EXPECT_EQ(t.wait(30ms), "}");
+    std::string handshake;             // point A: segment 1 has run out, segment 2 runs
+    for (int ms = 0; ms < 50 && handshake.empty(); ++ms) handshake = t.wait(1ms);
+    EXPECT_EQ(handshake, "}");
+    // T3Y3 (+768 counts): no } until segment 2 ends at point B (192 + 512 counts).
+    EXPECT_EQ(t.type("3300"), "3300");
+    handshake.clear();
+    for (int ms = 0; ms < 50 && handshake.empty(); ++ms) {
+        EXPECT_LT(t.drive.state().motion.commanded_counts(), 704);
+        handshake = t.wait(1ms);
+    }
+    EXPECT_EQ(handshake, "}");
+    EXPECT_GE(t.drive.state().motion.commanded_counts(), 704);
     EXPECT_EQ(t.type("0\r"), prompted("0"));
     t.wait(300ms);
-    EXPECT_EQ(t.type("G!"), prompted("G!704"));
+    EXPECT_EQ(t.type("G!"), prompted("G!1472"));
 }
 
 TEST(Pmc960Examples, Ex25ContourSeparateLines) { // L2239-2247
