@@ -270,48 +270,6 @@ void Pmc960Interpreter::gainsArgument(char c) {
     fail(0xA2);
 }
 
-// C[<sign>]<position>[:<speed>](<cr>|^) | C^ | C* (L1095-1117). chosen, a simple subset: each segment is a
-// move queued behind the running one at the segment speed (one may wait: #8A); the speed profile within a
-// segment is the profile generator's trapezoid, not the manual's distance-based ramp.
-void Pmc960Interpreter::camArgument(char c, bool first) {
-    Pmc960Registers& reg = m_state.reg;
-    if (first && (c == '+' || c == '-')) {
-        m_sign = c == '+' ? 1 : -1;
-        return;
-    }
-    if (first && c == '*') {
-        stopMotion();
-        m_triggered = true;
-        return;
-    }
-    if (first && c == '^') return beginWait(Pmc960Wait::MotionDone, true);
-    if (c == ':' && !m_colon && numberGiven()) {
-        m_colon = true;
-        return;
-    }
-    if (collectDigit(c, false)) return;
-    if (c == '\r' && m_triggered) return finish();
-    if (c != '\r' && c != '^') return fail(0xA2);
-    if (!numberGiven()) return fail(0xA2);
-    std::int64_t speed = reg.camSpeed;
-    if (m_colon) {
-        speed = 0;
-        for (const char d : m_fraction) speed = speed * 10 + hexValue(d);
-    }
-    const Pmc960Units units = m_state.units();
-    if (speed > std::int64_t(units.maximumUserVelocity())) return fail(0x94);
-    const std::int64_t travel = speed > 0 ? speed : reg.camSpeed;
-    if (travel == 0) return fail(0x8B);
-    const double target = units.position_counts(double((m_sign < 0 ? -1 : 1) * number()));
-    if (!motionAllowed(target < m_state.motion.commanded_counts())) return;
-    const double feedrate = double(reg.feedrate) / 100.0;
-    if (!m_state.motion.go(target, units.velocity_cps(double(travel)) * feedrate,
-                           units.accel_cps2(double(reg.acceleration))))
-        return fail(0x8A);
-    reg.camSpeed = speed;
-    finish();
-}
-
 // R<tick><count>...<cr> (L1441-1460, L2155-2284). Ticks 1-7 forward, 9-F reverse; the count has 2, 3 or 4
 // hex digits. chosen: each segment is queued as a move at count/tick-time with TUB ramps; G/H ticks and
 // binary counts are not simulated (#A2).

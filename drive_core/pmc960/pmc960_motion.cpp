@@ -10,6 +10,8 @@ namespace drive_core::pmc960 {
 void Pmc960Motion::reset() {
     m_generator = motion::ProfileGenerator{};
     m_sensorAction = SensorAction::None;
+    m_cam = false;
+    m_camPending.reset();
     m_mode = 0;
     m_error_counts = 0;
     m_forward = true;
@@ -20,6 +22,8 @@ void Pmc960Motion::setMode(int mode) {
         const double actual = actual_counts();
         m_generator = motion::ProfileGenerator{};
         m_sensorAction = SensorAction::None;
+        m_cam = false;
+        m_camPending.reset();
         m_generator.setPosition(actual);
         m_error_counts = 0;
     } else if (mode == 2 && !moving()) {
@@ -51,18 +55,24 @@ void Pmc960Motion::jog(double velocity_cps, double accel_cps2) {
     move.accel_cps2 = accel_cps2;
     move.decel_cps2 = accel_cps2;
     if (velocity_cps != 0) m_forward = velocity_cps > 0;
+    m_cam = false; // a jog takes over from a cam holding its speed
+    m_camPending.reset();
     m_generator.jog(move);
 }
 
 void Pmc960Motion::stop(double decel_cps2) {
     m_generator.setHeld(false); // a stop also cancels a start still waiting for SENSOR
     m_sensorAction = SensorAction::None;
+    m_cam = false;
+    m_camPending.reset();
     m_generator.stop(decel_cps2);
 }
 
 void Pmc960Motion::sharpStop() {
     const double here = m_generator.position();
     m_sensorAction = SensorAction::None;
+    m_cam = false;
+    m_camPending.reset();
     m_generator = motion::ProfileGenerator{};
     m_generator.setPosition(here);
 }
@@ -120,6 +130,12 @@ double Pmc960Motion::remaining_counts() const {
 bool Pmc960Motion::step(double dt_s) {
     m_generator.step(dt_s);
     if (!moving()) m_sensorAction = SensorAction::None;
+    if (m_camPending && (!moving() || m_generator.segment() == 2)) { // the ramp before it has ended
+        const CamSegment next = *m_camPending;
+        m_camPending.reset();
+        (void)startCam(next, false);
+    }
+    if (!moving()) m_cam = false;
     if (m_mode == 0) return false;
     // e' = v (1 - ff) - kv e, integrated exactly over dt: kv = 4/s per PLGAIN step (chosen), ff = FFGAIN/128.
     const double kv = std::max(1, m_loop.positionGain) * 4.0;

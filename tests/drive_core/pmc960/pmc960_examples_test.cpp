@@ -42,16 +42,25 @@ TEST(Pmc960Examples, Ex03BranchConditional) {
     EXPECT_EQ(t.drive.state().reg.outputs, 1);
 }
 
-TEST(Pmc960Examples, Ex04Cam) {
+TEST(Pmc960Examples, Ex04Cam) { // L1116-1117: 100 RPM by position 1000, then on to 2000 at that speed
     TestDrive t;
     t.enable();
+    const auto& motion = t.drive.state().motion;
     EXPECT_EQ(t.type("C1000:100\r"), prompted("C1000:100"));
-    EXPECT_EQ(t.type("C2000^"), prompted("C2000^"));
-    t.wait(500ms);
-    EXPECT_EQ(t.type("G!"), prompted("G!2000"));
-    EXPECT_EQ(t.type("C3000\r"), prompted("C3000")); // previous cam speed
-    EXPECT_EQ(t.type("C^"), "C^");
-    EXPECT_EQ(t.wait(500ms), kPrompt);
+    EXPECT_EQ(t.type("C2000^"), "C2000^"); // ^: the prompt once this segment has reached 2000
+    double speedAt1000 = -1;
+    std::string out;
+    for (int ms = 0; ms < 1000 && out.empty(); ++ms) {
+        if (speedAt1000 < 0 && motion.commanded_counts() >= 1000) speedAt1000 = motion.velocity_cps();
+        out = t.wait(1ms);
+    }
+    EXPECT_EQ(out, kPrompt);
+    EXPECT_NEAR(speedAt1000, 10000, 10000 * 0.001 + 40); // V 100 = 10,000 counts/s (within one 1 ms tick)
+    EXPECT_NEAR(motion.commanded_counts(), 2000, 10 + 1);
+    EXPECT_EQ(t.type("V!"), prompted("V!100")); // the cam holds its speed past 2000
+    EXPECT_EQ(t.type("C3000:0^", 300ms), prompted("C3000:0^"));
+    EXPECT_FALSE(motion.moving());
+    EXPECT_EQ(t.type("G!"), prompted("G!3000"));
 }
 
 TEST(Pmc960Examples, Ex05Dwell) {
