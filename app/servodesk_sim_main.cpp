@@ -2,6 +2,7 @@
 // running in real time until killed. Any serial program (picocom, pyserial, the IDE) can talk to it;
 // --control adds a Unix-domain socket for the bench (inputs, limits, load, motor, power).
 #include "drive_core/drive_factory.h"
+#include "drive_core/pmc960/pmc960_drive.h"
 #include "serialport/pty_drive_host.h"
 
 #include <atomic>
@@ -24,12 +25,17 @@ void onSignal(int) {
 int usage(int code) {
     std::fprintf(code ? stderr : stdout,
                  "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio) [--speed F] [--control PATH]\n"
-                 "                     [--link PATH]\n"
+                 "                     [--link PATH] [--overrun]\n"
                  "  --pty           create a pseudo-terminal; its path is printed first as \"PTY /dev/pts/N\"\n"
                  "  --stdio         talk on stdin/stdout (a lone LF counts as CR); stops at end of input\n"
                  "  --speed F       run simulated time F times faster than the wall clock (default 1)\n"
                  "  --link PATH     with --pty: also make PATH a symbolic link to the pty, replacing a stale\n"
                  "                  one, so a client can reconnect by name after a restart\n"
+                 "  --overrun       pmc960 only: the controller's one-character receive buffer overruns as\n"
+                 "                  the real one does: bytes cross at the baud rate, and one arriving while\n"
+                 "                  the firmware is busy (5 ms after a + or - trigger, or while a program\n"
+                 "                  runs) overwrites the one before. A pty has no CTS line, so a host must\n"
+                 "                  pace itself (what RTS/CTS does on a real port)\n"
                  "  --control PATH  listen on a Unix-domain socket at PATH for bench commands, one a line,\n"
                  "                  each answered with one line (OK, ERROR <reason>, or the status):\n"
                  "                    input N on|off   enable on|off   motion on|off   home on|off\n"
@@ -50,6 +56,7 @@ int main(int argc, char** argv) {
     serialport::PtyDriveHost::Options options;
     std::string controlPath;
     std::string linkPath;
+    bool overrun = false;
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         const bool hasValue = i + 1 < argc;
@@ -65,6 +72,8 @@ int main(int argc, char** argv) {
             controlPath = argv[++i];
         else if (arg == "--link" && hasValue)
             linkPath = argv[++i];
+        else if (arg == "--overrun")
+            overrun = true;
         else if (arg == "--help" || arg == "-h")
             return usage(0);
         else {
@@ -82,6 +91,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "servodesk-sim: no simulator for drive \"%.*s\" (available: bds5)\n",
                      int(driveName.size()), driveName.data());
         return 2;
+    }
+    if (overrun) {
+        auto* pmc = dynamic_cast<drive_core::pmc960::Pmc960Drive*>(drive.get());
+        if (!pmc) {
+            std::fprintf(stderr, "servodesk-sim: --overrun is for --drive pmc960 only\n");
+            return 2;
+        }
+        pmc->setOverrunModel(true);
     }
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);

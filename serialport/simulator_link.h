@@ -19,9 +19,16 @@ class SimulatorLink final : public Link {
     Q_OBJECT
 public:
     struct Options {
-        double speedFactor = 1.0; // simulated seconds per wall-clock second
-        int baudRate = 9600;      // the drive's BAUD: its UART paces what it sends; sessions time out by it
+        double speedFactor = 1.0;    // simulated seconds per wall-clock second
+        int baudRate = 9600;         // the drive's BAUD: its UART paces what it sends; sessions time out by it
         bool lineRateLimited = true; // false: no wire, every byte crosses at once (fast tests, benchmarks)
+        // PMC-960 only: the controller's one-character receive buffer overruns as the real one does
+        // (Pmc960Drive::setOverrunModel, seed-pmc960 §9.6): bytes cross at the baud rate, and one that lands
+        // while the firmware is busy overwrites the one before.
+        bool overrunModel = false;
+        // With overrunModel: this side's UART sends a byte only while the controller's CTS is on (RTS/CTS, as
+        // SerialPortLink::FlowControl::Hardware). false: bytes go out back to back and may be lost.
+        bool hardwareFlowControl = true;
     };
 
     SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent = nullptr);

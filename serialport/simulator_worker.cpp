@@ -4,6 +4,7 @@
 #include "simulator_fallback_controls.h"
 
 #include "drive_core/drive_factory.h"
+#include "drive_core/pmc960/pmc960_drive.h"
 
 #include <algorithm>
 
@@ -26,6 +27,10 @@ void SimulatorWorker::start() {
         return;
     }
     m_drive->setLineRateLimited(m_options.lineRateLimited);
+    if (auto* pmc = dynamic_cast<drive_core::pmc960::Pmc960Drive*>(m_drive.get()); pmc && m_options.overrunModel) {
+        pmc->setOverrunModel(true);
+        m_overrunDrive = pmc;
+    }
     m_drive->powerUp();
     m_clock.start();
     m_timer = new QTimer(this);
@@ -37,7 +42,12 @@ void SimulatorWorker::start() {
 
 void SimulatorWorker::receive(const QByteArray& bytes) {
     if (!m_drive) return;
-    m_drive->receive(std::string_view(bytes.constData(), std::size_t(bytes.size())));
+    if (m_overrunDrive && m_options.hardwareFlowControl) {
+        m_held += bytes;
+        sendWhileClear();
+    } else {
+        m_drive->receive(std::string_view(bytes.constData(), std::size_t(bytes.size())));
+    }
     // Answer at once instead of at the next 1 ms tick: the drive handles its input without time passing.
     m_drive->step(std::chrono::microseconds(0));
     const std::string out = m_drive->takeTransmitted();
@@ -62,6 +72,15 @@ void SimulatorWorker::control(const std::function<void(drive_core::SimulatorCont
     reportStatus();
 }
 
+// A UART with RTS/CTS starts a byte only while CTS is on and the byte before has gone: one byte at a time,
+// so none lands on a full buffer.
+void SimulatorWorker::sendWhileClear() {
+    if (!m_overrunDrive || !m_options.hardwareFlowControl || m_held.isEmpty()) return;
+    if (!m_overrunDrive->clearToSend() || !m_overrunDrive->lineIdle()) return;
+    m_overrunDrive->receive(std::string_view(m_held.constData(), 1));
+    m_held.remove(0, 1);
+}
+
 void SimulatorWorker::reportStatus() {
     if (drive_core::SimulatorControls* bench = controls()) emit statusChanged(bench->status());
 }
@@ -73,6 +92,7 @@ void SimulatorWorker::tick() {
     m_simulatedUs += double(wallDeltaUs) * m_options.speedFactor;
     int ticks = 0;
     while (double(m_drive->now().count()) + double(kTick.count()) <= m_simulatedUs && ticks < kMaxTicksPerWake) {
+        sendWhileClear();
         m_drive->step(kTick);
         ++ticks;
     }

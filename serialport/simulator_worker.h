@@ -11,6 +11,10 @@
 
 #include <functional>
 
+namespace drive_core::pmc960 {
+class Pmc960Drive;
+}
+
 namespace serialport {
 
 class SimulatorWorker final : public QObject {
@@ -34,10 +38,13 @@ private:
     void tick();
     drive_core::SimulatorControls* controls();
     void reportStatus();
+    void sendWhileClear(); // overrun model with flow control: one byte onto the wire while CTS is on
 
     drive_core::DriveFamily m_family;
     SimulatorLink::Options m_options;
     std::unique_ptr<drive_core::Drive> m_drive;
+    drive_core::pmc960::Pmc960Drive* m_overrunDrive = nullptr;         // m_drive, when its overrun model is on
+    QByteArray m_held;                                                 // written, held by CTS off
     std::unique_ptr<drive_core::SimulatorControls> m_fallbackControls; // until the family offers controls()
     qint64 m_lastStatusUs = 0;
     QTimer* m_timer = nullptr;

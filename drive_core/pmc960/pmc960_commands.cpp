@@ -89,16 +89,32 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
             return fail(beyondForward ? 0xB8 : 0xB9), false; // code not given: B8/B9 (digest §11.2 #28)
         }
     }
+    // SP, latched as the motion starts (L1612-1631): bit 6 adaptive depth, 3 external decel (I and G).
+    const bool fromRest = !motion.moving();
+    const bool depth = (reg.profile & 0x40) != 0 && (command == 'I' || command == 'G');
+    const bool externalDecel = (reg.profile & 0x08) != 0 && (command == 'I' || command == 'G');
+    const double speed = units.velocity_cps(double(reg.velocity)) * feedrate;
+    if (depth && externalDecel) return fail(0xB4), false;
+    // The depth must exceed the distance to stop from speed plus the following error (L1487-1492).
+    if (depth && double(reg.depth) <= speed * speed / (2 * accel) + motion.steadyError_counts(speed))
+        return fail(0xB1), false;
     switch (command) {
     case 'I':
-        motion.index(sign * units.position_counts(double(reg.distance)),
-                     units.velocity_cps(double(reg.velocity)) * feedrate, accel);
+    case 'G': {
+        const double target = command == 'I'
+                                  ? motion.target_counts() + sign * units.position_counts(double(reg.distance))
+                                  : units.position_counts(double(reg.goPosition));
+        using Action = Pmc960Motion::SensorAction;
+        if (externalDecel) { // at speed until SENSOR, then down at the A rate, wherever that ends
+            motion.jog(target < motion.commanded_counts() ? -speed : speed, accel);
+            motion.onSensor(Action::Decelerate, accel);
+        } else {
+            motion.go(target, speed, accel);
+            if (depth) motion.onSensor(Action::Depth, accel, double(reg.depth)); // SD is in counts
+        }
         break;
+    }
     case 'J': motion.jog(sign * units.velocity_cps(double(reg.jogSpeed)) * feedrate, accel); break;
-    case 'G':
-        motion.go(units.position_counts(double(reg.goPosition)), units.velocity_cps(double(reg.velocity)) * feedrate,
-                  accel);
-        break;
     case 'H': {
         // Resolver: the next position ahead whose reading is the location; encoder: the next marker. chosen:
         // an encoder (THA 0) has its marker every 4,096 counts.
@@ -111,11 +127,20 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
             while (target <= here) target += size;
         else
             while (target >= here) target -= size;
-        motion.go(target, units.velocity_cps(double(m_state.table.inUse("TUH"))), accel);
+        const double homeSpeed = units.velocity_cps(double(m_state.table.inUse("TUH")));
+        if ((reg.profile & 0x04) != 0) { // SP bit 2: SENSOR, not the zero reference, stops the home
+            motion.jog(sign * homeSpeed, accel);
+            motion.onSensor(Pmc960Motion::SensorAction::Stop, accel);
+        } else {
+            motion.go(target, homeSpeed, accel);
+        }
         break;
     }
     default: break;
     }
+    // SP bits 5+4: a motion from rest starts on SENSOR. chosen: the zero-reference start (bit 4 = 0) is
+    // not modelled (nothing turns a motor at rest in the simulator), so that motion starts at once.
+    if (fromRest && (reg.profile & 0x30) == 0x30) motion.holdForSensor();
     return true;
 }
 
@@ -245,48 +270,6 @@ void Pmc960Interpreter::gainsArgument(char c) {
     fail(0xA2);
 }
 
-// C[<sign>]<position>[:<speed>](<cr>|^) | C^ | C* (L1095-1117). chosen, a simple subset: each segment is a
-// move queued behind the running one at the segment speed (one may wait: #8A); the speed profile within a
-// segment is the profile generator's trapezoid, not the manual's distance-based ramp.
-void Pmc960Interpreter::camArgument(char c, bool first) {
-    Pmc960Registers& reg = m_state.reg;
-    if (first && (c == '+' || c == '-')) {
-        m_sign = c == '+' ? 1 : -1;
-        return;
-    }
-    if (first && c == '*') {
-        stopMotion();
-        m_triggered = true;
-        return;
-    }
-    if (first && c == '^') return beginWait(Pmc960Wait::MotionDone, true);
-    if (c == ':' && !m_colon && numberGiven()) {
-        m_colon = true;
-        return;
-    }
-    if (collectDigit(c, false)) return;
-    if (c == '\r' && m_triggered) return finish();
-    if (c != '\r' && c != '^') return fail(0xA2);
-    if (!numberGiven()) return fail(0xA2);
-    std::int64_t speed = reg.camSpeed;
-    if (m_colon) {
-        speed = 0;
-        for (const char d : m_fraction) speed = speed * 10 + hexValue(d);
-    }
-    const Pmc960Units units = m_state.units();
-    if (speed > std::int64_t(units.maximumUserVelocity())) return fail(0x94);
-    const std::int64_t travel = speed > 0 ? speed : reg.camSpeed;
-    if (travel == 0) return fail(0x8B);
-    const double target = units.position_counts(double((m_sign < 0 ? -1 : 1) * number()));
-    if (!motionAllowed(target < m_state.motion.commanded_counts())) return;
-    const double feedrate = double(reg.feedrate) / 100.0;
-    if (!m_state.motion.go(target, units.velocity_cps(double(travel)) * feedrate,
-                           units.accel_cps2(double(reg.acceleration))))
-        return fail(0x8A);
-    reg.camSpeed = speed;
-    finish();
-}
-
 // R<tick><count>...<cr> (L1441-1460, L2155-2284). Ticks 1-7 forward, 9-F reverse; the count has 2, 3 or 4
 // hex digits. chosen: each segment is queued as a move at count/tick-time with TUB ramps; G/H ticks and
 // binary counts are not simulated (#A2).
@@ -321,7 +304,11 @@ void Pmc960Interpreter::contourArgument(char c) {
     const double tick_s = 256.0 / 192000.0 * std::pow(2.0, n - 1) * rangeScale;
     const double direction = m_contourTick < 0 ? -1 : 1;
     const double target = m_state.motion.target_counts() + direction * double(count);
+    const bool fromRest = !m_state.motion.moving();
     if (count > 0 && !m_state.motion.go(target, double(count) / tick_s, units.maximumAccel_cps2())) return fail(0xD8);
+    // Sensor start (L2255): a segment entered from command level waits for SENSOR. chosen: a sensor start
+    // requested within a running profile (hold the last speed until SENSOR) is not modelled.
+    if (count > 0 && fromRest && (m_state.reg.profile & 0x30) == 0x30) m_state.motion.holdForSensor();
     m_contourTick = 0;
     clearNumber();
     if (m_source == Source::Sci) beginWait(Pmc960Wait::ContourReady, false);

@@ -55,6 +55,8 @@ public:
     // is lost, L2523). clearToSend() is CTS: true while the buffer is empty. Off by default.
     void setOverrunModel(bool on) { m_overrunModel = on; }
     bool clearToSend() const { return !m_overrunModel || !m_holdingFull; }
+    // No byte of the host's is still on its way (received, not yet in the buffer).
+    bool lineIdle() const { return m_received.empty(); }
     int overruns() const { return m_overruns; }
     static constexpr std::int64_t kBusyAfterTrigger_us = 5000;
 

@@ -65,7 +65,10 @@ void Pmc960Drive::setLine(Pmc960Line line, bool asserted) {
         }
         return;
     }
-    case Pmc960Line::Sensor: lines.sensor = asserted; return;
+    case Pmc960Line::Sensor: // acts on its assertion (L516: within 2 counts; 8 us minimum pulse)
+        if (asserted && !lines.sensor) m_state.motion.sensor();
+        lines.sensor = asserted;
+        return;
     case Pmc960Line::Exec: // EXEC' high-to-low runs the TLV routine (L476)
         if (asserted && m_interpreter.idle() && m_mode == Mode::Command) {
             const char label = char(m_state.table.inUse("TLV"));

@@ -74,6 +74,7 @@ bool Pmc960Interpreter::waitSatisfied() const {
     case Pmc960Wait::Until: return conditionHolds();
     case Pmc960Wait::SingleStep: return m_stepGranted;
     case Pmc960Wait::ContourReady: return !m_state.motion.full();
+    case Pmc960Wait::CamSegment: return !m_state.motion.camHold();
     }
     return true;
 }
@@ -93,6 +94,7 @@ int Pmc960Interpreter::escape() {
     case Pmc960Wait::Until: code = 0xD6; break; // the table's D6, not 7.19's D0 (digest §11.2 #7)
     case Pmc960Wait::SingleStep: code = 0xD5; break;
     case Pmc960Wait::ContourReady: code = 0xD7; break;
+    case Pmc960Wait::CamSegment: code = 0x89; break; // BREAK while Cam waited for the ^ synchronisation
     case Pmc960Wait::None:
         if (m_running)
             code = 0xC4;

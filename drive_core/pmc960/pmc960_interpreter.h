@@ -31,7 +31,7 @@ public:
     virtual void autobaud() = 0;                                 // N<cr>
 };
 
-enum class Pmc960Wait { None, MotionDone, ConstantSpeed, Dwell, Until, SingleStep, ContourReady };
+enum class Pmc960Wait { None, MotionDone, ConstantSpeed, Dwell, Until, SingleStep, ContourReady, CamSegment };
 
 class Pmc960Interpreter {
 public:

@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace drive_core::pmc960 {
 
 void Pmc960Motion::reset() {
     m_generator = motion::ProfileGenerator{};
+    m_sensorAction = SensorAction::None;
+    m_cam = false;
+    m_camPending.reset();
     m_mode = 0;
     m_error_counts = 0;
     m_forward = true;
@@ -17,6 +21,9 @@ void Pmc960Motion::setMode(int mode) {
     if (mode == 0) {
         const double actual = actual_counts();
         m_generator = motion::ProfileGenerator{};
+        m_sensorAction = SensorAction::None;
+        m_cam = false;
+        m_camPending.reset();
         m_generator.setPosition(actual);
         m_error_counts = 0;
     } else if (mode == 2 && !moving()) {
@@ -48,15 +55,24 @@ void Pmc960Motion::jog(double velocity_cps, double accel_cps2) {
     move.accel_cps2 = accel_cps2;
     move.decel_cps2 = accel_cps2;
     if (velocity_cps != 0) m_forward = velocity_cps > 0;
+    m_cam = false; // a jog takes over from a cam holding its speed
+    m_camPending.reset();
     m_generator.jog(move);
 }
 
 void Pmc960Motion::stop(double decel_cps2) {
+    m_generator.setHeld(false); // a stop also cancels a start still waiting for SENSOR
+    m_sensorAction = SensorAction::None;
+    m_cam = false;
+    m_camPending.reset();
     m_generator.stop(decel_cps2);
 }
 
 void Pmc960Motion::sharpStop() {
     const double here = m_generator.position();
+    m_sensorAction = SensorAction::None;
+    m_cam = false;
+    m_camPending.reset();
     m_generator = motion::ProfileGenerator{};
     m_generator.setPosition(here);
 }
@@ -68,12 +84,58 @@ double Pmc960Motion::normalize(double position_counts) {
     return cancelled;
 }
 
+void Pmc960Motion::onSensor(SensorAction action, double decel_cps2, double depth_counts) {
+    m_sensorAction = action;
+    m_sensorDecel_cps2 = std::max(1.0, decel_cps2);
+    m_depth_counts = depth_counts;
+}
+
+void Pmc960Motion::sensor() {
+    if (m_generator.held()) { // external start: the motion begins; this edge does nothing else
+        m_generator.setHeld(false);
+        return;
+    }
+    if (m_sensorAction == SensorAction::None || !moving()) return;
+    // EXTERNAL DECEL and ADAPTIVE DEPTH look for SENSOR only once top speed is reached (L1487-1492, L1622).
+    if (m_sensorAction != SensorAction::Stop && !atTopSpeed()) return;
+    const SensorAction action = m_sensorAction;
+    m_sensorAction = SensorAction::None;
+    const double v = m_generator.velocity();
+    const double a = m_sensorDecel_cps2;
+    if (action != SensorAction::Depth || v == 0) {
+        m_generator.stop(a);
+        return;
+    }
+    // Stop depth counts past SENSOR: cruise, then decelerate at a, landing exactly on the spot.
+    const double speed = std::abs(v);
+    const double direction = v > 0 ? 1.0 : -1.0;
+    const double cruise_s = std::max(0.0, (m_depth_counts - speed * speed / (2 * a)) / speed);
+    std::vector<motion::Segment> plan;
+    if (cruise_s > 0) plan.push_back({cruise_s, 0.0});
+    plan.push_back({speed / a, -direction * a});
+    const double travel = speed * cruise_s + speed * speed / (2 * a);
+    m_generator.start(std::move(plan), m_generator.position() + direction * travel);
+}
+
+double Pmc960Motion::steadyError_counts(double velocity_cps) const {
+    const double kv = std::max(1, m_loop.positionGain) * 4.0;
+    const double ff = std::min(1.0, m_loop.feedForwardGain / 128.0);
+    return std::abs(velocity_cps) * (1 - ff) / kv;
+}
+
 double Pmc960Motion::remaining_counts() const {
     return std::abs(m_generator.finalPosition() - m_generator.position());
 }
 
 bool Pmc960Motion::step(double dt_s) {
     m_generator.step(dt_s);
+    if (!moving()) m_sensorAction = SensorAction::None;
+    if (m_camPending && (!moving() || m_generator.segment() == 2)) { // the ramp before it has ended
+        const CamSegment next = *m_camPending;
+        m_camPending.reset();
+        (void)startCam(next, false);
+    }
+    if (!moving()) m_cam = false;
     if (m_mode == 0) return false;
     // e' = v (1 - ff) - kv e, integrated exactly over dt: kv = 4/s per PLGAIN step (chosen), ff = FFGAIN/128.
     const double kv = std::max(1, m_loop.positionGain) * 4.0;

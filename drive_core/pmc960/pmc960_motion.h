@@ -6,6 +6,8 @@
 
 #include "drive_core/motion/profile_generator.h"
 
+#include <optional>
+
 namespace drive_core::pmc960 {
 
 class Pmc960Motion {
@@ -34,6 +36,28 @@ public:
     // N: the absolute position becomes position; returns the position error it cancelled (SN).
     double normalize(double position_counts);
 
+    // SENSOR (JM4, L516), per the SP bits latched when a motion starts (L1612-1631). holdForSensor: the
+    // motion just commanded from rest waits for SENSOR (bits 5+4). onSensor: what SENSOR does to the motion
+    // just commanded once it runs at top speed (Stop: at any speed).
+    enum class SensorAction { None, Decelerate, Depth, Stop };
+    void holdForSensor() { m_generator.setHeld(true); }
+    void onSensor(SensorAction action, double decel_cps2, double depth_counts = 0);
+    // SENSOR asserted (its edge): releases a held start, else does the motion's SensorAction.
+    void sensor();
+    bool waitingForSensor() const { return m_generator.held(); }
+    // The following error the loop settles to at a constant speed (adaptive depth, #B1).
+    double steadyError_counts(double velocity_cps) const;
+
+    // Cam (7.4, pmc960_cam.cpp): a segment changes the speed uniformly over the distance to position_counts,
+    // reaching speed_cps (> 0 forward or reverse as the position lies) there, then holds it; speed 0 stops
+    // there. One segment waits behind one still in its ramp.
+    enum class CamResult { Started, Queued, Full, OtherMotion, Reverse, TooClose, AccelTooHigh, RampTooLong };
+    CamResult cam(double position_counts, double speed_cps, double maxAccel_cps2);
+    bool camRunning() const { return m_cam; }
+    // SS CAM HOLD: the latest segment has not reached its position.
+    bool camHold() const { return m_camPending.has_value() || (m_cam && m_generator.segment() == 1); }
+    static constexpr double kMaxCamRamp_s = 65.535; // a 16-bit count of milliseconds (chosen, #83)
+
     // Advances dt; returns true when the following error exceeds the SF trip point in a position mode
     // (the caller raises #E1 and sets SM0).
     bool step(double dt_s);
@@ -44,6 +68,7 @@ public:
     bool full() const { return m_generator.full(); }
     // ';' is satisfied at constant speed or at rest.
     bool atConstantSpeed() const { return !moving() || m_generator.acceleration() == 0; }
+    bool atTopSpeed() const { return moving() && !waitingForSensor() && m_generator.acceleration() == 0; }
     double commanded_counts() const { return m_generator.position(); }
     double target_counts() const { return m_generator.finalPosition(); }
     double actual_counts() const { return m_generator.position() - m_error_counts; }
@@ -60,6 +85,18 @@ private:
     double m_error_counts = 0;
     double m_trip_counts = 2048;
     bool m_forward = true;
+    struct CamSegment {
+        double position_counts = 0;
+        double speed_cps = 0;
+        double maxAccel_cps2 = 1;
+    };
+    CamResult startCam(const CamSegment& segment, bool check);
+    bool m_cam = false; // a cam runs: ramping, or holding its speed
+    std::optional<CamSegment> m_camPending;
+    double m_camEnd_counts = 0; // where the running segment's ramp ends
+    SensorAction m_sensorAction = SensorAction::None;
+    double m_sensorDecel_cps2 = 1;
+    double m_depth_counts = 0;
 };
 
 } // namespace drive_core::pmc960

@@ -6,8 +6,9 @@ namespace drive_core::pmc960 {
 int Pmc960State::motionBits() const {
     int bits = 0;
     if (motion.enabled()) bits |= 0x80;
+    if (motion.camHold()) bits |= 0x10;
     if (motion.moving()) bits |= 0x08;
-    if (motion.moving() && motion.acceleration_cps2() == 0) bits |= 0x04;
+    if (motion.atTopSpeed()) bits |= 0x04;
     if (motion.forward()) bits |= 0x02;
     return bits;
 }

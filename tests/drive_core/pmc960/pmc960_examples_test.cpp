@@ -42,16 +42,25 @@ TEST(Pmc960Examples, Ex03BranchConditional) {
     EXPECT_EQ(t.drive.state().reg.outputs, 1);
 }
 
-TEST(Pmc960Examples, Ex04Cam) {
+TEST(Pmc960Examples, Ex04Cam) { // L1116-1117: 100 RPM by position 1000, then on to 2000 at that speed
     TestDrive t;
     t.enable();
+    const auto& motion = t.drive.state().motion;
     EXPECT_EQ(t.type("C1000:100\r"), prompted("C1000:100"));
-    EXPECT_EQ(t.type("C2000^"), prompted("C2000^"));
-    t.wait(500ms);
-    EXPECT_EQ(t.type("G!"), prompted("G!2000"));
-    EXPECT_EQ(t.type("C3000\r"), prompted("C3000")); // previous cam speed
-    EXPECT_EQ(t.type("C^"), "C^");
-    EXPECT_EQ(t.wait(500ms), kPrompt);
+    EXPECT_EQ(t.type("C2000^"), "C2000^"); // ^: the prompt once this segment has reached 2000
+    double speedAt1000 = -1;
+    std::string out;
+    for (int ms = 0; ms < 1000 && out.empty(); ++ms) {
+        if (speedAt1000 < 0 && motion.commanded_counts() >= 1000) speedAt1000 = motion.velocity_cps();
+        out = t.wait(1ms);
+    }
+    EXPECT_EQ(out, kPrompt);
+    EXPECT_NEAR(speedAt1000, 10000, 10000 * 0.001 + 40); // V 100 = 10,000 counts/s (within one 1 ms tick)
+    EXPECT_NEAR(motion.commanded_counts(), 2000, 10 + 1);
+    EXPECT_EQ(t.type("V!"), prompted("V!100")); // the cam holds its speed past 2000
+    EXPECT_EQ(t.type("C3000:0^", 300ms), prompted("C3000:0^"));
+    EXPECT_FALSE(motion.moving());
+    EXPECT_EQ(t.type("G!"), prompted("G!3000"));
 }
 
 TEST(Pmc960Examples, Ex05Dwell) {
@@ -63,6 +72,21 @@ TEST(Pmc960Examples, Ex05Dwell) {
     EXPECT_EQ(out, "}");
     EXPECT_EQ(t.type("\r"), "");
     EXPECT_EQ(t.wait(30ms), kPrompt);
+}
+
+TEST(Pmc960Examples, Ex05DwellAfterTopSpeed) { // D300;<cr>: 300 ms after top speed
+    TestDrive t;
+    t.enable();
+    t.type("I100000+\r"); // 10 ms to V400 at A4000
+    EXPECT_EQ(t.type("D300;"), "D300;");
+    EXPECT_EQ(t.wait(5ms), ""); // still accelerating
+    std::string handshake;
+    for (int ms = 0; ms < 20 && handshake.empty(); ++ms) handshake = t.wait(1ms);
+    EXPECT_EQ(handshake, "}");
+    EXPECT_EQ(t.drive.state().motionBits() & 0x0C, 0x0C); // MOTION, TOP VELOCITY
+    EXPECT_EQ(t.type("\r"), "");                          // the dwell starts now
+    EXPECT_EQ(t.wait(299ms), "");
+    EXPECT_EQ(t.wait(8ms), kPrompt); // on the 4 ms clock: 300 to 304 ms
 }
 
 TEST(Pmc960Examples, Ex06And07CallAndExit) {
@@ -229,10 +253,21 @@ TEST(Pmc960Examples, Ex23And24ContourHandshakes) {
     EXPECT_EQ(t.type("R"), "R}");
     EXPECT_EQ(t.type("1C0"), "1C0}");  // T1Y1: +192 counts in 1.33 ms; next accepted at once
     EXPECT_EQ(t.type("3200"), "3200"); // T2Y2 waits until segment 1 runs out (point A)
-    EXPECT_EQ(t.wait(30ms), "}");
+    std::string handshake;             // point A: segment 1 has run out, segment 2 runs
+    for (int ms = 0; ms < 50 && handshake.empty(); ++ms) handshake = t.wait(1ms);
+    EXPECT_EQ(handshake, "}");
+    // T3Y3 (+768 counts): no } until segment 2 ends at point B (192 + 512 counts).
+    EXPECT_EQ(t.type("3300"), "3300");
+    handshake.clear();
+    for (int ms = 0; ms < 50 && handshake.empty(); ++ms) {
+        EXPECT_LT(t.drive.state().motion.commanded_counts(), 704);
+        handshake = t.wait(1ms);
+    }
+    EXPECT_EQ(handshake, "}");
+    EXPECT_GE(t.drive.state().motion.commanded_counts(), 704);
     EXPECT_EQ(t.type("0\r"), prompted("0"));
     t.wait(300ms);
-    EXPECT_EQ(t.type("G!"), prompted("G!704"));
+    EXPECT_EQ(t.type("G!"), prompted("G!1472"));
 }
 
 TEST(Pmc960Examples, Ex25ContourSeparateLines) { // L2239-2247
@@ -245,12 +280,27 @@ TEST(Pmc960Examples, Ex25ContourSeparateLines) { // L2239-2247
     EXPECT_EQ(t.type("3200\r"), prompted("3200}"));
 }
 
-TEST(Pmc960Examples, Ex26ContourSensorStart) {
+TEST(Pmc960Examples, Ex26ContourSensorStart) { // L2255-2264: the first segment waits for SENSOR
     TestDrive t;
     t.enable();
     EXPECT_EQ(t.type("SY30\r"), prompted("SY30")); // SY read as SP (digest §11.2 #20)
     EXPECT_EQ(t.type("SP?"), prompted("SP?30"));
-    EXPECT_EQ(t.type("SY0\r"), prompted("SY0"));
+    // R T1Y1 T2Y2<cr>: +192 counts, then +512; the second is queued behind the held first.
+    EXPECT_EQ(t.type("R1C03200\r"), prompted("R}1C0}3200"));
+    EXPECT_EQ(t.type("SY0\r", 100ms), prompted("SY0"));
+    EXPECT_EQ(t.type("G!"), prompted("G!0")); // no SENSOR yet: nothing has moved
+    EXPECT_EQ(t.type("R"), "R");              // both segments still to run: no } for T3Y3
+    EXPECT_EQ(t.wait(100ms), "");
+    t.drive.setLine(Pmc960Line::Sensor, true); // segment 1 starts; segment 2 follows without SENSOR
+    std::string handshake;                     // the } once segment 1 has run out and segment 2 runs
+    for (int ms = 0; ms < 50 && handshake.empty(); ++ms) handshake = t.wait(1ms);
+    EXPECT_EQ(handshake, "}");
+    EXPECT_TRUE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("3200\r"), prompted("3200")); // T3Y3 waits behind segment 2: no } for it
+    EXPECT_TRUE(t.drive.state().motion.full());
+    t.drive.setLine(Pmc960Line::Sensor, false);
+    t.wait(300ms);
+    EXPECT_EQ(t.type("G!"), prompted("G!1216"));
 }
 
 TEST(Pmc960Examples, ErrorsFromTheBreakMatrix) { // 5.3.5: FAULT' #E3, BREAK' #C7
