@@ -5,6 +5,7 @@
 #include "app/main_window.h"
 #include "app/sc750/sc750_controller_menu.h"
 #include "app/sc750/sc750_debugger.h"
+#include "app/sc750/sc750_function_dialog.h"
 #include "app/sc750/sc750_output_dock.h"
 #include "app/sc750/sc750_setup_dialog.h"
 #include "app/sc750/sc750_variables_dock.h"
@@ -18,6 +19,7 @@
 #include <QAction>
 #include <QDialogButtonBox>
 #include <QFile>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -269,6 +271,57 @@ private slots:
         QVERIFY(edit->paramsBlock().contains(QStringLiteral("KVP = 0.043543")));
         QVERIFY(edit->table()->item(0, 1)->flags() & Qt::ItemIsEditable);
         edit->close();
+    }
+
+    // Compile > Real Time Function Call (L2796-L2812): GO.VEL with a RUN.SPEED typed in the dialog reaches
+    // the controller, and the simulated motor turns at that speed.
+    void realTimeFunctionCallTurnsTheMotor() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        bool enabled = false;
+        ws.send('P', QStringLiteral("ENABLE=1"), [&enabled](const serialport::Sc750Reply&) { enabled = true; });
+        QTRY_VERIFY_WITH_TIMEOUT(enabled, kTimeoutMs);
+        auto* dialog = qobject_cast<app::Sc750FunctionDialog*>(ws.showFunctionCall());
+        QVERIFY(dialog);
+        dialog->selectFunction(QStringLiteral("GO.VEL"));
+        QVERIFY(dialog->field(QStringLiteral("RUN.SPEED")));
+        QTRY_COMPARE_WITH_TIMEOUT(dialog->field(QStringLiteral("RUN.SPEED"))->text(), QStringLiteral("1000"),
+                                  kTimeoutMs);
+        dialog->field(QStringLiteral("RUN.SPEED"))->setText(QStringLiteral("600"));
+        QSignalSpy called(dialog, &app::Sc750FunctionDialog::called);
+        dialog->call();
+        QTRY_COMPARE_WITH_TIMEOUT(called.count(), 1, kTimeoutMs);
+        QCOMPARE(dialog->status(), QStringLiteral("GO.VEL issued."));
+        QTRY_VERIFY_WITH_TIMEOUT((ws.variablesDock()->readVariable(QStringLiteral("VELOCITY")),
+                                  ws.variablesDock()->value(QStringLiteral("VELOCITY")) == QStringLiteral("600")),
+                                 kTimeoutMs);
+        ws.variablesDock()->readVariable(QStringLiteral("RUN.SPEED"));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("RUN.SPEED")), QStringLiteral("600"),
+                                  kTimeoutMs);
+        dialog->selectFunction(QStringLiteral("ABORT.MOTION"));
+        dialog->call();
+        QTRY_COMPARE_WITH_TIMEOUT(called.count(), 2, kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT((ws.variablesDock()->readVariable(QStringLiteral("VELOCITY")),
+                                  ws.variablesDock()->value(QStringLiteral("VELOCITY")) == QStringLiteral("0")),
+                                 kTimeoutMs);
+
+        // Controller > Axis Selection: the address goes to the workspace and the status bar.
+        ws.action(QStringLiteral("Axis Selection"))->trigger();
+        QInputDialog* axis = nullptr;
+        QTRY_VERIFY((axis = window.findChild<QInputDialog*>()));
+        QCOMPARE(axis->intValue(), 255);
+        axis->setIntValue(3);
+        axis->accept();
+        QCOMPARE(ws.axis(), 3);
+        auto* label = window.statusBar()->findChild<QLabel*>(QStringLiteral("sc750CursorLabel"));
+        QVERIFY(label);
+        QVERIFY2(label->text().startsWith(QStringLiteral("Axis 003 ")), qPrintable(label->text()));
+        // The simulated controller is an RS-232 unit (S1 = 255): it ignores the logon and still answers.
+        QString model;
+        ws.send('G', QStringLiteral("MODEL"), [&model](const serialport::Sc750Reply& r) { model = r.payload; });
+        QTRY_COMPARE_WITH_TIMEOUT(model, QStringLiteral("MODEL=752"), kTimeoutMs);
     }
 
     void sourceFileDownloadAndUpload() {
