@@ -42,6 +42,7 @@ int usage(int code) {
                  "                    home-at REV   limits on|off on|off (positive, negative)\n"
                  "                    load-torque NM   load-inertia KGM2   master-hz HZ   motor NAME\n"
                  "                    master-wave sine|square|triangle AMP_HZ FREQ_HZ   master-wave off\n"
+                 "                    analog-in V (the SC750's analog input, volts)\n"
                  "                    feedback on|off   power-cycle   status\n"
                  "                  With --pty, \"CONTROL PATH\" is printed after the PTY line.\n");
     return code;

@@ -71,7 +71,8 @@ std::string statusLine(const SimulatorStatus& s) {
            " load_inertia_kgm2=" + format(s.loadInertia_kgm2) + " master_hz=" + format(s.masterFrequency_Hz) +
            " motor=" + s.motorName + " feedback=" + (s.feedbackConnected ? "1" : "0") +
            " relay=" + (s.relayClosed ? "1" : "0") + " brake_released=" + (s.brakeReleased ? "1" : "0") +
-           " master_wave=" + waveText(s.masterWave);
+           " master_wave=" + waveText(s.masterWave) + " analog_in_v=" + format(s.analogInput_V) +
+           " analog_out_v=" + format(s.analogOutput_V) + " enc_out_counts=" + std::to_string(s.encoderOutput_counts);
 }
 } // namespace
 
@@ -111,7 +112,9 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
         controls.setLimitSwitches(*positive, *negative);
         return "OK";
     }
-    if ((verb == "home-at" || verb == "load-torque" || verb == "load-inertia" || verb == "master-hz") && arity(1)) {
+    if ((verb == "home-at" || verb == "load-torque" || verb == "load-inertia" || verb == "master-hz" ||
+         verb == "analog-in") &&
+        arity(1)) {
         const auto value = number(w[1]);
         if (!value) return "ERROR expected a number";
         if (verb == "load-inertia" && *value < 0) return "ERROR inertia must not be negative";
@@ -119,6 +122,7 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
         if (verb == "load-torque") controls.setLoadTorque_Nm(*value);
         if (verb == "load-inertia") controls.setLoadInertia_kgm2(*value);
         if (verb == "master-hz") controls.setMasterFrequency_Hz(*value);
+        if (verb == "analog-in") controls.setAnalogInput_V(*value);
         return "OK";
     }
     // master-wave sine|square|triangle AMP_HZ FREQ_HZ | master-wave off
@@ -141,7 +145,8 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
     }
     if (verb == "motor" && arity(1)) return controls.selectMotor(w[1]) ? "OK" : "ERROR unknown motor " + w[1];
     for (const char* known : {"status", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at",
-                              "load-torque", "load-inertia", "master-hz", "master-wave", "motor", "feedback"})
+                              "load-torque", "load-inertia", "master-hz", "master-wave", "analog-in", "motor",
+                              "feedback"})
         if (verb == known) return "ERROR wrong number of arguments for " + verb;
     return "ERROR unknown command " + verb;
 }

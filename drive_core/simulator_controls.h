@@ -39,9 +39,12 @@ struct SimulatorStatus {
     double masterFrequency_Hz = 0; // external encoder / master input, counts per second
     MasterWave masterWave;         // and the wave on top of it
     std::string motorName;
-    bool feedbackConnected = true; // resolver / encoder wires (off: the drive faults, BDS5 ERR 17)
-    bool relayClosed = false;      // fault relay: hardware watchdog OK (BDS5 C2 pins 16/17)
-    bool brakeReleased = false;    // brake output (BDS5 STATUS): the motor is held by the drive
+    bool feedbackConnected = true;      // resolver / encoder wires (off: the drive faults, BDS5 ERR 17)
+    bool relayClosed = false;           // fault relay: hardware watchdog OK (BDS5 C2 pins 16/17)
+    bool brakeReleased = false;         // brake output (BDS5 STATUS): the motor is held by the drive
+    double analogInput_V = 0;           // the voltage the bench applies to the analog input (SC750)
+    double analogOutput_V = 0;          // the analog output (SC750: DACMON, -5..+5 V)
+    long long encoderOutput_counts = 0; // quadrature counts the encoder output has emitted (SC750 ENC.OUT)
 };
 
 class SimulatorControls {
@@ -71,12 +74,14 @@ public:
     }
     // Breaks (false) or reconnects the motor's feedback wires; a drive that cannot simulate it ignores it.
     virtual void setFeedbackConnected(bool connected) { (void)connected; }
+    // The voltage on the drive's analog input; a drive without one ignores it.
+    virtual void setAnalogInput_V(double volts) { (void)volts; }
 };
 
 // The side channel's text form, one command per line, for servodesk-sim's control socket and for tests:
 //   input N on|off · enable on|off · motion on|off · home on|off · home-at REV · limits POS NEG (on|off)
 //   load-torque NM · load-inertia KGM2 · master-hz HZ · master-wave sine|square|triangle AMP_HZ FREQ_HZ ·
-//   master-wave off · motor NAME · feedback on|off · power-cycle · status
+//   master-wave off · analog-in V · motor NAME · feedback on|off · power-cycle · status
 // Returns "OK", "ERROR <reason>", or for `status` one line of key=value pairs.
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
 

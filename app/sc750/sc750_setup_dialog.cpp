@@ -6,6 +6,7 @@
 #include "main_window.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
+#include "drive_core/catalog/sc750_motors.h"
 #include "editor/program_editor.h"
 
 #include <QComboBox>
@@ -61,6 +62,9 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
     connect(m_response, &QComboBox::currentIndexChanged, this, [this] {
         if (m_auto->isChecked()) fillAuto();
     });
+    connect(m_part, &QLineEdit::textChanged, this, [this] {
+        if (m_auto->isChecked()) fillAuto();
+    });
     resize(460, 560);
     m_auto->setChecked(true);
     fillAuto();
@@ -68,31 +72,30 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
     m_workspace.send(
         'V', {},
         [self = QPointer(this)](const serialport::Sc750Reply& reply) {
-            if (self) self->m_model->setText(QStringLiteral("SC%1").arg(reply.payload.section(QLatin1Char(','), 0, 0)));
+            if (!self) return;
+            const QString model = reply.payload.section(QLatin1Char(','), 0, 0).trimmed();
+            self->m_model->setText(QStringLiteral("SC%1").arg(model));
+            self->m_modelNumber = model.toInt();
+            if (self->m_auto->isChecked()) self->fillAuto();
         },
         [self = QPointer(this)](const QString& why) {
             if (self) self->m_model->setText(tr("unknown (%1)").arg(why));
         });
 }
 
-QList<QPair<QString, double>> Sc750SetupDialog::autoParameters(bool gentle) {
+QList<QPair<QString, double>> Sc750SetupDialog::autoParameters(bool gentle, const QString& motorPart, int model) {
     QList<QPair<QString, double>> values;
-    for (const catalog::VariableInfo& v : catalog::variables()) {
-        if (v.access != catalog::Access::Parameter || v.name == "AUTOSTART") continue;
-        const QString name = QString::fromLatin1(v.name.data(), qsizetype(v.name.size()));
-        double value = v.defaultValue;
-        if (gentle) {
-            if (name == QLatin1String("KVP") || name == QLatin1String("KVI") || name == QLatin1String("KPP")) value /= 2;
-            if (name == QLatin1String("ARF0")) value = 100;
-            if (name == QLatin1String("ARF1")) value = 500;
-        }
-        values.append({name, value});
-    }
+    for (const auto& [name, value] : catalog::setupParameters(motorPart.trimmed().toStdString(), model, gentle))
+        values.append({QString::fromStdString(name), value});
     return values;
 }
 
+void Sc750SetupDialog::setMotorPart(const QString& part) {
+    m_part->setText(part);
+}
+
 void Sc750SetupDialog::fillAuto() {
-    const auto values = autoParameters(m_response->currentIndex() == 1);
+    const auto values = autoParameters(m_response->currentIndex() == 1, m_part->text(), m_modelNumber);
     m_table->setRowCount(int(values.size()));
     for (int row = 0; row < values.size(); ++row) {
         auto* name = new QTableWidgetItem(values[row].first);
@@ -109,8 +112,10 @@ void Sc750SetupDialog::loadParams(const QString& text) {
     bool inBlock = false;
     for (const QString& line : text.split(QLatin1Char('\n'))) {
         const QString word = line.simplified().toUpper();
-        if (word.startsWith(QLatin1String("PARAMS START"))) inBlock = true;
-        else if (word.startsWith(QLatin1String("PARAMS END"))) break;
+        if (word.startsWith(QLatin1String("PARAMS START")))
+            inBlock = true;
+        else if (word.startsWith(QLatin1String("PARAMS END")))
+            break;
         else if (const auto m = assignment.match(line); inBlock && m.hasMatch())
             for (int row = 0; row < m_table->rowCount(); ++row)
                 if (m_table->item(row, 0)->text().compare(m.captured(1), Qt::CaseInsensitive) == 0)
@@ -126,9 +131,19 @@ void Sc750SetupDialog::setManual(bool manual) {
         QTableWidgetItem* item = m_table->item(row, 1);
         item->setFlags(manual ? item->flags() | Qt::ItemIsEditable : item->flags() & ~Qt::ItemIsEditable);
     }
-    setStatus(manual ? tr("Manual: edit the values, then OK.") : tr("Auto: computed for a stable, medium-performance "
-                                                                     "servo; OK writes them."),
-              false);
+    if (manual) {
+        setStatus(tr("Manual: edit the values, then OK."), false);
+        return;
+    }
+    const QString part = m_part->text().trimmed();
+    const catalog::MotorInfo* motor = catalog::findMotor(part.toStdString());
+    const QString forMotor =
+        motor ? tr("motor %1 (%2)")
+                    .arg(QString::fromLatin1(motor->part.data(), qsizetype(motor->part.size())),
+                         QString::fromLatin1(motor->description.data(), qsizetype(motor->description.size())))
+        : part.isEmpty() ? tr("no motor given: the boiler-plate values")
+                         : tr("motor %1 is not in the table: the boiler-plate values").arg(part);
+    setStatus(tr("Auto: computed for a stable, medium-performance servo, %1; OK writes them.").arg(forMotor), false);
 }
 
 void Sc750SetupDialog::setGentle(bool gentle) {
@@ -144,10 +159,10 @@ QString Sc750SetupDialog::paramsBlock() const {
 }
 
 QString Sc750SetupDialog::withParams(const QString& text, const QString& block) {
-    static const QRegularExpression existing(QStringLiteral("^[ \\t]*PARAMS[ \\t]+START\\b.*?^[ \\t]*PARAMS[ \\t]+END[^\\n]*"),
-                                             QRegularExpression::CaseInsensitiveOption |
-                                                 QRegularExpression::MultilineOption |
-                                                 QRegularExpression::DotMatchesEverythingOption);
+    static const QRegularExpression existing(
+        QStringLiteral("^[ \\t]*PARAMS[ \\t]+START\\b.*?^[ \\t]*PARAMS[ \\t]+END[^\\n]*"),
+        QRegularExpression::CaseInsensitiveOption | QRegularExpression::MultilineOption |
+            QRegularExpression::DotMatchesEverythingOption);
     const QRegularExpressionMatch match = existing.match(text);
     if (match.hasMatch()) return QString(text).replace(match.capturedStart(), match.capturedLength(), block);
     return QStringLiteral("'-----Parameter Values Header-----\n") + block + QStringLiteral("\n\n") + text;
@@ -170,8 +185,9 @@ void Sc750SetupDialog::apply() {
     }
     // Then the controller: each value, and configured (it shows UC until then, L1555).
     for (int row = 0; row < m_table->rowCount(); ++row)
-        m_workspace.send('P', QStringLiteral("%1=%2").arg(m_table->item(row, 0)->text(), m_table->item(row, 1)->text().trimmed()),
-                         {}, [ws = &m_workspace](const QString& why) { emit ws->message(tr("Set up: %1").arg(why)); });
+        m_workspace.send(
+            'P', QStringLiteral("%1=%2").arg(m_table->item(row, 0)->text(), m_table->item(row, 1)->text().trimmed()),
+            {}, [ws = &m_workspace](const QString& why) { emit ws->message(tr("Set up: %1").arg(why)); });
     m_workspace.send('K', QStringLiteral("1"), [ws = &m_workspace](const serialport::Sc750Reply&) {
         emit ws->message(tr("The controller is set up and configured"));
     });

@@ -4,9 +4,10 @@
 // OK writes the PARAMS block into the program in the editor, sends each value to the controller and
 // configures it (K1). Non-modal; GUI thread only.
 //
-// chosen: the manual gives no formulas for the gains (digest §2.10). Auto starts from the boiler-plate
-// values (the manual's stable, medium-performance set, L946-L973) and for Gentle/Low Bandwidth halves
-// KVP, KVI and KPP and lowers the anti-resonance filters to 100/500 Hz (large inertia mismatch, belts).
+// chosen: the manual gives no formulas for the gains (digest §2.10). Auto takes the motor's and the
+// controller model's values from drive_core's small motor table (catalog::sc750::setupParameters, the
+// boiler-plate set for an unknown motor) and for Gentle/Low Bandwidth halves KVP, KVI and KPP and lowers
+// the anti-resonance filters to 100/500 Hz (large inertia mismatch, belts).
 #pragma once
 
 #include <QDialog>
@@ -26,8 +27,9 @@ class Sc750SetupDialog final : public QDialog {
 public:
     Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent = nullptr);
 
-    // The Auto values: name and value of every PARAMS parameter, in catalog order.
-    static QList<QPair<QString, double>> autoParameters(bool gentle);
+    // The Auto values for a motor part number ("R45G...") on a controller MODEL (0 = unknown): name and
+    // value of every PARAMS parameter, in catalog order.
+    static QList<QPair<QString, double>> autoParameters(bool gentle, const QString& motorPart, int model);
     // "PARAMS START" ... "PARAMS END" for the values in the table.
     QString paramsBlock() const;
     // Replaces the PARAMS block of text (or puts one at the top) with block.
@@ -37,6 +39,8 @@ public:
     void loadParams(const QString& text);
     void setManual(bool manual);
     void setGentle(bool gentle);
+    void setMotorPart(const QString& part);
+    int controllerModel() const { return m_modelNumber; } // 0 until the controller has answered
     QTableWidget* table() const { return m_table; }
     QString status() const;
     // OK: editor, controller, configure.
@@ -54,6 +58,7 @@ private:
     QComboBox* m_response;
     QTableWidget* m_table;
     QLabel* m_status;
+    int m_modelNumber = 0;
 };
 
 } // namespace app

@@ -20,24 +20,32 @@ QString number(double value) {
 } // namespace
 
 QStringList sc750VariableGroups() {
-    return {QObject::tr("Set-up parameters"),     QObject::tr("Motion profile"),     QObject::tr("Position, velocity, current"),
-            QObject::tr("Status"),                QObject::tr("Gearing and encoder"), QObject::tr("Registration"),
-            QObject::tr("WHEN latches"),          QObject::tr("I/O"),                 QObject::tr("Interrupt enables"),
-            QObject::tr("Timers"),                QObject::tr("Other")};
+    return {QObject::tr("Set-up parameters"),
+            QObject::tr("Motion profile"),
+            QObject::tr("Position, velocity, current"),
+            QObject::tr("Status"),
+            QObject::tr("Gearing and encoder"),
+            QObject::tr("Registration"),
+            QObject::tr("WHEN latches"),
+            QObject::tr("I/O"),
+            QObject::tr("Interrupt enables"),
+            QObject::tr("Timers"),
+            QObject::tr("Other")};
 }
 
 QString sc750VariableGroup(const catalog::VariableInfo& v) {
     const QStringList groups = sc750VariableGroups();
     const QString n = name(v);
-    static const QStringList kProfile{"ACCEL.RATE", "DECEL.RATE", "ACCEL.TYPE", "RUN.SPEED", "DIR", "INDEX.DIST",
-                                      "TARGET.POS", "PAUSE.TIME", "IN.POS.LIMIT", "POS.ERROR.MOVING",
-                                      "POS.ERROR.STOPPED"};
-    static const QStringList kMotion{"POS.COMMAND", "POSITION", "POS.ERROR", "RESPOS", "VELOCITY", "RVEL", "MOVING",
-                                     "IN.POSITION", "VEL.CMD", "VEL.ERR", "ICMD", "IFB"};
-    static const QStringList kStatus{"ENABLE", "ENABLED", "FAULTCODE", "TIME", "MODEL", "FWV", "AXIS.ADDR", "LOGGEDON",
-                                     "AXIS.INTR"};
-    static const QStringList kGearing{"GEARING", "RATIO", "PULSES.IN", "PULSES.OUT", "ACCEL.GEAR", "DECEL.GEAR",
-                                      "GEARLOCK", "GEARERROR", "ENCPOS", "COUNTER"};
+    static const QStringList kProfile{"ACCEL.RATE",   "DECEL.RATE",       "ACCEL.TYPE",        "RUN.SPEED",
+                                      "DIR",          "INDEX.DIST",       "TARGET.POS",        "PAUSE.TIME",
+                                      "IN.POS.LIMIT", "POS.ERROR.MOVING", "POS.ERROR.STOPPED", "CW.OT.LIMIT",
+                                      "CCW.OT.LIMIT"};
+    static const QStringList kMotion{"POS.COMMAND", "POSITION",    "POS.ERROR", "RESPOS",  "VELOCITY", "RVEL",
+                                     "MOVING",      "IN.POSITION", "VEL.CMD",   "VEL.ERR", "ICMD",     "IFB"};
+    static const QStringList kStatus{"ENABLE", "ENABLED",   "FAULTCODE", "TIME",     "MODEL",
+                                     "FWV",    "AXIS.ADDR", "LOGGEDON",  "AXIS.INTR"};
+    static const QStringList kGearing{"GEARING",    "RATIO",    "PULSES.IN", "PULSES.OUT", "ACCEL.GEAR",
+                                      "DECEL.GEAR", "GEARLOCK", "GEARERROR", "ENCPOS",     "COUNTER"};
     static const QStringList kIo{"INPUTS", "OUTPUTS", "PWM12", "ANALOG.OUT", "ANALOG.IN", "DACMON"};
     if (v.access == catalog::Access::Parameter) return groups[0];
     if (kProfile.contains(n)) return groups[1];

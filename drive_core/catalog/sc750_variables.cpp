@@ -55,6 +55,8 @@ const VariableInfo kFixed[] = {
     {"IN.POS.LIMIT", Integer, RW, 0, kBig, 10, "counts", "in-position tolerance for IN.POSITION", "L2965, L3374", true},
     {"POS.ERROR.MOVING", Integer, RW, 0, kBig, 4096, "counts", "POS.ERROR interrupt threshold while moving", "L1861", true},
     {"POS.ERROR.STOPPED", Integer, RW, 0, kBig, 1024, "counts", "POS.ERROR interrupt threshold at rest", "L1861", true},
+    {"CW.OT.LIMIT", Integer, RW, -kPos, kPos, kPos, "counts", "CWOT interrupt while POSITION is clockwise of it (name chosen)", "L1854", true},
+    {"CCW.OT.LIMIT", Integer, RW, -kPos, kPos, -kPos, "counts", "CCWOT interrupt while POSITION is counter-clockwise of it (name chosen)", "L1845", true},
     // §5.3 position, velocity, status
     {"POS.COMMAND", Integer, RW, -kPos, kPos, 0, "counts", "position command; writing redefines the present position", "L1412-L1416"},
     {"POSITION", Integer, RO, -kPos, kPos, 0, "counts", "actual position relative to electrical home", "L1418-L1420"},

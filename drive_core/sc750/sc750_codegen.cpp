@@ -238,8 +238,7 @@ void CodeGenerator::emitSwap(const Stmt& s) {
     const ValueType a = targetType(*s.target);
     const ValueType b = targetType(*s.target2);
     if (a != b) fail(s.where, "SWAP needs two variables of the same type");
-    if (s.target->kind == ExprKind::Remote || s.target2->kind == ExprKind::Remote)
-        fail(s.where, "SWAP cannot exchange PacLAN variables");
+    // no PacLAN operand reaches here: the parser refuses writing another axis's variable (L2283)
     const int tmp = hiddenVariable(a == ValueType::String  ? "#SWAP.S"
                                    : a == ValueType::Float ? "#SWAP.F"
                                                            : "#SWAP.I",

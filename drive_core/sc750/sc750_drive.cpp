@@ -56,6 +56,9 @@ void Sc750Drive::powerUp() {
     m_timeBase = 0;
     m_timeOffset_s = 0;
     m_encoderPosition = 0;
+    m_actual_counts = m_actualVel_cps = m_lastShaft_counts = 0;
+    m_lagging = false;
+    m_analogInFiltered_V = m_dacmon_V = m_encoderOut_counts = 0;
     m_ratioFromPulses = false;
     m_lastInput7 = m_lastInput8 = true;
     m_timers = {};
@@ -129,6 +132,8 @@ void Sc750Drive::tick() {
     m_wasEnabled = en;
     m_motion.step(kTick_s);
     if (en) m_motion.stepGearing(kTick_s, gearSettings());
+    followCommand();
+    analogTick();
     registration();
     m_encoderPosition += m_masterFrequency * kTick_s;
     for (int t = 0; t < 6; ++t) {
@@ -215,7 +220,7 @@ void Sc750Drive::setInput(int number, bool on) {
 bool Sc750Drive::homeClosed() const {
     if (m_homeSwitch) return true;
     if (std::isnan(m_homeCam_rev)) return false;
-    return std::abs(m_motion.shaft_counts() / kCountsPerRev - m_homeCam_rev) <= 0.25;
+    return std::abs(m_actual_counts / kCountsPerRev - m_homeCam_rev) <= 0.25;
 }
 
 bool Sc750Drive::input(int number) const {
@@ -238,8 +243,13 @@ SimulatorStatus Sc750Drive::status() const {
     s.homeSwitch = homeClosed();
     s.active = enabled();
     s.fault = m_runFault != 0;
-    s.position_rev = m_motion.shaft_counts() / kCountsPerRev;
-    s.velocity_rpm = m_motion.velocity_rpm();
+    s.positiveLimit = m_inhibitCw;
+    s.negativeLimit = m_inhibitCcw;
+    s.position_rev = m_actual_counts / kCountsPerRev;
+    s.velocity_rpm = m_lagging ? m_actualVel_cps / kCpsPerRpm : m_motion.velocity_rpm();
+    s.analogInput_V = m_analogIn_V;
+    s.analogOutput_V = m_dacmon_V;
+    s.encoderOutput_counts = std::llround(m_encoderOut_counts);
     s.masterFrequency_Hz = m_masterFrequency;
     s.motorName = "SC750 ideal servo";
     return s;

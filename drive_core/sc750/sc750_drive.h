@@ -46,7 +46,12 @@ public:
     void setHomeSwitch(bool on) override { m_homeSwitch = on; }
     // The home cam: closed within ±0.25 rev of this shaft position (rev since power-up). NaN = no cam.
     void setHomeSwitchPosition_rev(double position_rev) override { m_homeCam_rev = position_rev; }
-    void setLimitSwitches(bool, bool) override {}
+    // The directional inhibit inputs INH+ (J53-1, clockwise) and INH- (J53-2, counter-clockwise), true = active.
+    void setLimitSwitches(bool cwInhibit, bool ccwInhibit) override {
+        m_inhibitCw = cwInhibit;
+        m_inhibitCcw = ccwInhibit;
+    }
+    void setAnalogInput_V(double volts) override { m_analogIn_V = volts; }
     void setLoadTorque_Nm(double) override {}
     void setLoadInertia_kgm2(double) override {}
     void setMasterFrequency_Hz(double countsPerSecond) override { m_masterFrequency = countsPerSecond; }
@@ -106,6 +111,12 @@ private:
     GearSettings gearSettings() const;
     void registration();
     void refreshInterruptsEnabled();
+    bool interruptAsserted(int source);
+    // sc750_drive_io.cpp: the shaft following the command (inhibits), analog input/output, encoder output.
+    void followCommand();
+    void analogTick();
+    double dacSignal_V();
+    double lag_counts() const { return m_motion.shaft_counts() - m_actual_counts; } // POS.ERROR
 
     struct Timer {
         bool pulse = false;
@@ -140,6 +151,15 @@ private:
     double m_homeCam_rev = std::nan("");
     double m_masterFrequency = 0;
     double m_encoderPosition = 0;
+    bool m_inhibitCw = false, m_inhibitCcw = false;
+    double m_actual_counts = 0; // the shaft (generator coordinates): lags the command only when inhibited
+    double m_actualVel_cps = 0; // its speed while it lags
+    bool m_lagging = false;
+    double m_analogIn_V = 0;         // the bench's voltage on the analog input
+    double m_analogInFiltered_V = 0; // ANALOG.IN, after ADF0
+    double m_dacmon_V = 0;           // DACMON = the analog output, after DMF0
+    double m_encoderOut_counts = 0;  // emitted by the encoder output (ENC.OUT > 0), quadrature counts
+    double m_lastShaft_counts = 0;
     bool m_configured = true;
     bool m_ratioFromPulses = false;                // PULSES.IN/OUT written after RATIO
     bool m_lastInput7 = true, m_lastInput8 = true; // registration edges

@@ -79,6 +79,16 @@ const DriveIndex& driveIndex() {
         i.pulsesout = at("PULSES.OUT");
         i.accelgear = at("ACCEL.GEAR");
         i.decelgear = at("DECEL.GEAR");
+        i.dacmon = at("DACMON");
+        i.adf0 = at("ADF0");
+        i.adoffset = at("AD.OFFSET");
+        i.dmf0 = at("DMF0");
+        i.encout = at("ENC.OUT");
+        i.analogout = at("ANALOG.OUT");
+        i.cwot = at("CW.OT.LIMIT");
+        i.ccwot = at("CCW.OT.LIMIT");
+        i.poserrmoving = at("POS.ERROR.MOVING");
+        i.poserrstopped = at("POS.ERROR.STOPPED");
         return i;
     }();
     return index;
@@ -109,15 +119,23 @@ Value Sc750Drive::readVariable(int i) {
     const DriveIndex& x = ix();
     auto integer = [](double v) { return Value(std::int32_t(std::llround(v))); };
     const double pcmd = m_motion.positionCommand_counts();
-    if (i == x.poscmd || i == x.position) return integer(pcmd); // ideal servo: no following error
-    if (i == x.poserror) return Value(std::int32_t(0));
+    // ideal servo: POSITION = POS.COMMAND unless an inhibit holds the shaft back (followCommand)
+    if (i == x.poscmd) return integer(pcmd);
+    if (i == x.position) return integer(pcmd - lag_counts());
+    if (i == x.poserror) return Value(std::int32_t(std::llround(pcmd) - std::llround(pcmd - lag_counts())));
     if (i == x.respos) {
-        const auto counts = std::llround(m_motion.shaft_counts());
+        const auto counts = std::llround(m_actual_counts);
         return Value(std::int32_t(((counts % 4096) + 4096) % 4096));
     }
-    if (i == x.velocity || i == x.rvel || i == x.velcmd) return Value(float(m_motion.velocity_rpm()));
+    if (i == x.velocity || i == x.rvel)
+        return Value(float(m_lagging ? m_actualVel_cps / kCpsPerRpm : m_motion.velocity_rpm()));
+    if (i == x.velcmd) return Value(float(m_motion.velocity_rpm()));
     if (i == x.moving) return Value(std::int32_t(m_motion.moving() ? 1 : 0));
-    if (i == x.inposition) return Value(std::int32_t(!m_motion.moving() ? 1 : 0));
+    if (i == x.inposition)
+        return Value(
+            std::int32_t(!m_motion.moving() && std::abs(toDouble(readVariable(x.poserror))) <= num(x.inposlimit)));
+    if (i == x.analogin) return Value(float(m_analogInFiltered_V));
+    if (i == x.dacmon) return Value(float(m_dacmon_V));
     if (i == x.enabled) return Value(std::int32_t(enabled() ? 1 : 0));
     if (i == x.faultcode) return Value(std::int32_t(faultCode()));
     if (i == x.time) return Value(float(double(m_ticks - m_timeBase) * kTick_s + m_timeOffset_s));
@@ -187,19 +205,7 @@ void Sc750Drive::refreshInterruptsEnabled() {
 int Sc750Drive::takeInterrupt() {
     const int n = int(cat::interruptSources().size());
     for (int k = 0; k < n; ++k) {
-        if (num(ix().intr0 + k) == 0) continue;
-        bool asserted = false;
-        if (k == 2)
-            asserted = m_charReceived;
-        else if (k == 5)
-            asserted = m_disableEvent;
-        else if (k == 6)
-            asserted = faultCode() != cat::kFaultNone && faultCode() != cat::kFaultEnabled;
-        else if (k >= 7 && k < 23)
-            asserted = input(k - 6);
-        else if (k >= 23 && k < 39)
-            asserted = !input(k - 22);
-        if (!asserted) continue;
+        if (num(ix().intr0 + k) == 0 || !interruptAsserted(k)) continue;
         if (k == 2) m_charReceived = false;
         if (k == 5) m_disableEvent = false;
         set(ix().intr0 + k, std::int32_t(0)); // taking an interrupt disables its source (L1766-L1780)
@@ -275,7 +281,7 @@ double Sc750Drive::whenSample(int source) {
     if (source >= 1 && source <= 16) return input(source) ? 1 : 0;
     if (source == 17 || source == 18) return std::llround(m_motion.positionCommand_counts());
     if (source == 19) return std::llround(m_encoderPosition);
-    return 0; // ANALOG.IN: no analog source on the bench yet
+    return m_analogInFiltered_V; // 20: ANALOG.IN
 }
 
 void Sc750Drive::whenLatch() {
@@ -286,7 +292,8 @@ void Sc750Drive::whenLatch() {
     set(x.whenRespos, readVariable(x.respos));
     set(x.whenRvel, readVariable(x.rvel));
     set(x.whenTime, readVariable(x.time));
-    set(x.whenAnalog, m_values[std::size_t(x.analogin)]);
+    set(x.whenAnalog, readVariable(x.analogin));
+    set(x.whenDacmon, readVariable(x.dacmon));
     set(x.whenVelcmd, readVariable(x.velcmd));
 }
 

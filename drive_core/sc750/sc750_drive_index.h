@@ -9,7 +9,8 @@ struct DriveIndex {
         pwm12, inp1, out1, intr0, tmenable1, tmout1, whenPcmd, whenPos, whenEncpos, whenRespos, whenRvel, whenTime,
         whenAnalog, whenDacmon, whenIcmd, whenIfb, whenVelcmd, encpos, encfreq, analogin, ratio, dacmap, dmgain,
         blktype, autostart, gearing, gearlock, gearerror, encin, pulsesin, pulsesout, accelgear, decelgear, acceltype,
-        regmode, regfunc, regdist, regflag, regpos, regrespos, regencpos;
+        regmode, regfunc, regdist, regflag, regpos, regrespos, regencpos, dacmon, adf0, adoffset, dmf0, encout,
+        analogout, cwot, ccwot, poserrmoving, poserrstopped;
 };
 
 const DriveIndex& driveIndex();

@@ -5,6 +5,7 @@
 #include "app/main_window.h"
 #include "app/sc750/sc750_controller_menu.h"
 #include "app/sc750/sc750_debugger.h"
+#include "app/sc750/sc750_function_dialog.h"
 #include "app/sc750/sc750_output_dock.h"
 #include "app/sc750/sc750_setup_dialog.h"
 #include "app/sc750/sc750_variables_dock.h"
@@ -17,17 +18,18 @@
 
 #include <QAction>
 #include <QDialogButtonBox>
-#include <QLineEdit>
-#include <QMessageBox>
-#include <QPushButton>
 #include <QFile>
+#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
 
@@ -102,7 +104,8 @@ private slots:
         window.show();
         Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM a AS INTEGER\na = 1\nGOTO Nowhere\nEND\n"));
         QVERIFY(!ws.debugger().compile());
-        QVERIFY2(ws.debugger().lastError().startsWith(QStringLiteral("LINE 3 ")), qPrintable(ws.debugger().lastError()));
+        QVERIFY2(ws.debugger().lastError().startsWith(QStringLiteral("LINE 3 ")),
+                 qPrintable(ws.debugger().lastError()));
         int line = 0, index = 0;
         window.editor()->getCursorPosition(&line, &index);
         QCOMPARE(line, 2);
@@ -128,7 +131,7 @@ private slots:
         ws.action(QStringLiteral("Set Breakpoint"))->trigger();
         QCOMPARE(ws.debugger().breakpointLines(), QList<int>{2});
         QSignalSpy started(&ws.debugger(), &Sc750Debugger::runStarted);
-        ws.action(QStringLiteral("Run Program"))->trigger(); // compiles first: never compiled
+        ws.action(QStringLiteral("Run Program"))->trigger();       // compiles first: never compiled
         QTRY_COMPARE_WITH_TIMEOUT(started.count(), 1, kTimeoutMs); // downloaded, R answered
         QVERIFY(ws.outputDock()->isVisible());
         QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
@@ -169,7 +172,7 @@ private slots:
         MainWindow window;
         window.show();
         Sc750Workspace& ws = connectSc750(window, QStringLiteral("PAUSE.TIME = 0.05\nTick:\n  PRINT \"tick\"\n  PAUSE\n"
-                                                                  "GOTO Tick\n"));
+                                                                 "GOTO Tick\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         ws.debugger().run();
         QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().count(QStringLiteral("tick")) >= 3, kTimeoutMs);
@@ -194,7 +197,7 @@ private slots:
         MainWindow window;
         window.show();
         Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\nCount = Count + 1\n"
-                                                                  "PRINT \"Count is\"; Count\nEND\n"));
+                                                                 "PRINT \"Count is\"; Count\nEND\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         ws.debugger().toggleBreakpointAt(*window.editor(), 3); // the PRINT
         ws.debugger().run();
@@ -217,7 +220,8 @@ private slots:
         auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
         auto configured = [&ws] {
             auto flag = std::make_shared<QString>();
-            ws.send('?', {}, [flag](const serialport::Sc750Reply& r) { *flag = r.payload.section(QLatin1Char(','), 4, 4); });
+            ws.send('?', {},
+                    [flag](const serialport::Sc750Reply& r) { *flag = r.payload.section(QLatin1Char(','), 4, 4); });
             if (!QTest::qWaitFor([flag] { return !flag->isEmpty(); }, kTimeoutMs)) return QStringLiteral("no answer");
             return *flag;
         };
@@ -238,6 +242,17 @@ private slots:
         // Controller Set Up, Auto, Gentle: the PARAMS block goes into the program, the controller is configured.
         auto* setup = qobject_cast<app::Sc750SetupDialog*>(menu->controllerSetUp());
         QVERIFY(setup);
+        // Auto follows the motor: two motors of the table give two PARAMS blocks (catalog::setupParameters).
+        setup->setMotorPart(QStringLiteral("R45G"));
+        const QString medium = setup->paramsBlock();
+        QVERIFY(medium.contains(QStringLiteral("ILC = 59\n")));
+        QVERIFY(medium.contains(QStringLiteral("SIX.THRESH = 3147.83654\n")));
+        QVERIFY(setup->status().contains(QStringLiteral("R45G")));
+        setup->setMotorPart(QStringLiteral("R63G"));
+        QVERIFY(setup->paramsBlock() != medium);
+        QVERIFY(setup->paramsBlock().contains(QStringLiteral("POLECOUNT = 6\n")));
+        QTRY_COMPARE_WITH_TIMEOUT(setup->controllerModel(), 752, kTimeoutMs); // read over the wire
+        setup->setMotorPart(QString());
         setup->setGentle(true);
         QVERIFY(setup->paramsBlock().contains(QStringLiteral("KVP = 0.043543")));
         QVERIFY(setup->paramsBlock().contains(QStringLiteral("ARF0 = 100")));
@@ -247,7 +262,8 @@ private slots:
         QVERIFY(ws.debugger().compile());
         QTRY_COMPARE_WITH_TIMEOUT(configured(), QStringLiteral("1"), kTimeoutMs);
         ws.variablesDock()->readVariable(QStringLiteral("KVP"));
-        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("KVP")), QStringLiteral(".043543"), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("KVP")), QStringLiteral(".043543"),
+                                  kTimeoutMs);
 
         // Edit Parameters: Manual, holding the program's values.
         auto* edit = qobject_cast<app::Sc750SetupDialog*>(menu->editParameters());
@@ -255,6 +271,57 @@ private slots:
         QVERIFY(edit->paramsBlock().contains(QStringLiteral("KVP = 0.043543")));
         QVERIFY(edit->table()->item(0, 1)->flags() & Qt::ItemIsEditable);
         edit->close();
+    }
+
+    // Compile > Real Time Function Call (L2796-L2812): GO.VEL with a RUN.SPEED typed in the dialog reaches
+    // the controller, and the simulated motor turns at that speed.
+    void realTimeFunctionCallTurnsTheMotor() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        bool enabled = false;
+        ws.send('P', QStringLiteral("ENABLE=1"), [&enabled](const serialport::Sc750Reply&) { enabled = true; });
+        QTRY_VERIFY_WITH_TIMEOUT(enabled, kTimeoutMs);
+        auto* dialog = qobject_cast<app::Sc750FunctionDialog*>(ws.showFunctionCall());
+        QVERIFY(dialog);
+        dialog->selectFunction(QStringLiteral("GO.VEL"));
+        QVERIFY(dialog->field(QStringLiteral("RUN.SPEED")));
+        QTRY_COMPARE_WITH_TIMEOUT(dialog->field(QStringLiteral("RUN.SPEED"))->text(), QStringLiteral("1000"),
+                                  kTimeoutMs);
+        dialog->field(QStringLiteral("RUN.SPEED"))->setText(QStringLiteral("600"));
+        QSignalSpy called(dialog, &app::Sc750FunctionDialog::called);
+        dialog->call();
+        QTRY_COMPARE_WITH_TIMEOUT(called.count(), 1, kTimeoutMs);
+        QCOMPARE(dialog->status(), QStringLiteral("GO.VEL issued."));
+        QTRY_VERIFY_WITH_TIMEOUT((ws.variablesDock()->readVariable(QStringLiteral("VELOCITY")),
+                                  ws.variablesDock()->value(QStringLiteral("VELOCITY")) == QStringLiteral("600")),
+                                 kTimeoutMs);
+        ws.variablesDock()->readVariable(QStringLiteral("RUN.SPEED"));
+        QTRY_COMPARE_WITH_TIMEOUT(ws.variablesDock()->value(QStringLiteral("RUN.SPEED")), QStringLiteral("600"),
+                                  kTimeoutMs);
+        dialog->selectFunction(QStringLiteral("ABORT.MOTION"));
+        dialog->call();
+        QTRY_COMPARE_WITH_TIMEOUT(called.count(), 2, kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT((ws.variablesDock()->readVariable(QStringLiteral("VELOCITY")),
+                                  ws.variablesDock()->value(QStringLiteral("VELOCITY")) == QStringLiteral("0")),
+                                 kTimeoutMs);
+
+        // Controller > Axis Selection: the address goes to the workspace and the status bar.
+        ws.action(QStringLiteral("Axis Selection"))->trigger();
+        QInputDialog* axis = nullptr;
+        QTRY_VERIFY((axis = window.findChild<QInputDialog*>()));
+        QCOMPARE(axis->intValue(), 255);
+        axis->setIntValue(3);
+        axis->accept();
+        QCOMPARE(ws.axis(), 3);
+        auto* label = window.statusBar()->findChild<QLabel*>(QStringLiteral("sc750CursorLabel"));
+        QVERIFY(label);
+        QVERIFY2(label->text().startsWith(QStringLiteral("Axis 003 ")), qPrintable(label->text()));
+        // The simulated controller is an RS-232 unit (S1 = 255): it ignores the logon and still answers.
+        QString model;
+        ws.send('G', QStringLiteral("MODEL"), [&model](const serialport::Sc750Reply& r) { model = r.payload; });
+        QTRY_COMPARE_WITH_TIMEOUT(model, QStringLiteral("MODEL=752"), kTimeoutMs);
     }
 
     void sourceFileDownloadAndUpload() {
@@ -266,7 +333,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
         menu->downloadSource();
-        QTRY_VERIFY_WITH_TIMEOUT(window.statusBar()->currentMessage().contains(QStringLiteral("Source stored")), kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(window.statusBar()->currentMessage().contains(QStringLiteral("Source stored")),
+                                 kTimeoutMs);
         auto* first = window.editor();
         menu->uploadSource();
         QTRY_VERIFY_WITH_TIMEOUT(window.editor() != first, kTimeoutMs);

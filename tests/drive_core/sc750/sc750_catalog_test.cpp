@@ -1,11 +1,14 @@
 // The SC750 catalog as data: every family the digest lists (§4-§6) is there, with line references,
 // consistent types and ranges, and the look-ups the compiler and the IDE use are case-insensitive.
 #include "drive_core/catalog/sc750_catalog.h"
+#include "drive_core/catalog/sc750_motors.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -51,6 +54,46 @@ TEST(Sc750Catalog, LookupsIgnoreCase) {
     EXPECT_EQ(cat::interruptIndex("pos.error"), 40);
     EXPECT_EQ(cat::findFault(244)->display, "F 4");
     EXPECT_EQ(cat::findFault(99), nullptr);
+}
+
+} // namespace
+
+namespace {
+
+double param(const std::vector<std::pair<std::string, double>>& values, const std::string& name) {
+    for (const auto& [n, v] : values)
+        if (n == name) return v;
+    ADD_FAILURE() << name << " is not in the PARAMS block";
+    return -1;
+}
+
+TEST(Sc750SetUp, AutoTakesTheMotorsValuesFromTheTable) { // Controller Set Up, L2486-L2512
+    const auto small = cat::setupParameters("R32GENC", 752, false);
+    const auto medium = cat::setupParameters("r45g", 752, false);
+    EXPECT_NE(small, medium);
+    EXPECT_EQ(param(small, "ILC"), 13); // the boiler-plate motor (L946-L950)
+    EXPECT_EQ(param(small, "SIX.THRESH"), 430.664063);
+    EXPECT_EQ(param(medium, "ILC"), 59); // the manual's auto set-up example (L2508-L2512)
+    EXPECT_EQ(param(medium, "SIX.THRESH"), 3147.836538);
+    EXPECT_EQ(param(medium, "SIG.THRESH"), 2833.052885);
+    EXPECT_EQ(param(medium, "KVP"), 0.062053);
+    EXPECT_EQ(param(cat::setupParameters("R63G", 752, false), "POLECOUNT"), 6);
+    // every PARAMS parameter but AUTOSTART, in catalog order, for known and unknown motors alike
+    const auto unknown = cat::setupParameters("X999", 0, false);
+    ASSERT_EQ(unknown.size(), small.size());
+    EXPECT_EQ(unknown.front().first, "POLECOUNT");
+    EXPECT_EQ(param(unknown, "KVP"), cat::variables()[std::size_t(cat::variableIndex("KVP"))].defaultValue);
+}
+
+TEST(Sc750SetUp, AutoCapsTheCurrentAtTheMotorsPeakOnABiggerController) {         // the warning at L2438
+    EXPECT_EQ(param(cat::setupParameters("R32G", 756, false), "ILMT.PLUS"), 16); // 7.2 A of 45 A
+    EXPECT_EQ(param(cat::setupParameters("R32G", 756, false), "ILMT.MINUS"), 16);
+    EXPECT_EQ(param(cat::setupParameters("R32G", 752, false), "ILMT.PLUS"), 96);  // 7.2 A of 7.5 A
+    EXPECT_EQ(param(cat::setupParameters("R45G", 752, false), "ILMT.PLUS"), 100); // the controller is smaller
+    EXPECT_EQ(param(cat::setupParameters("R32G", 0, false), "ILMT.PLUS"), 100);   // model unknown
+    const auto gentle = cat::setupParameters("R45G", 752, true);
+    EXPECT_DOUBLE_EQ(param(gentle, "KVP"), 0.062053 / 2);
+    EXPECT_EQ(param(gentle, "ARF0"), 100);
 }
 
 } // namespace

@@ -105,7 +105,35 @@ INSTANTIATE_TEST_SUITE_P(Sc750, CompileErrors, ::testing::Values(
     ErrorCase{"DIM a, b AS INTEGER\nSWAP a\n", 2, 7, "", ", between the two variables"},
     ErrorCase{"DIM a AS INTEGER\nDIM s AS STRING\nSWAP a, s\n", 3, 1, "SWAP", "same type"},
     ErrorCase{"IF \"a\" THEN PRINT 1\n", 1, 4, "\"a\"", "a condition cannot be a string"},
-    ErrorCase{"PRINT 1 : : DIM\n", 1, 13, "DIM", "DIM must come before"}
+    ErrorCase{"PRINT 1 : : DIM\n", 1, 13, "DIM", "DIM must come before"},
+    ErrorCase{"PARAMS START\n5 = 1\nPARAMS END\n", 2, 1, "5", "expected a set-up parameter or PARAMS END"},
+    ErrorCase{"DIM a(4096) AS INTEGER\n", 1, 7, "4096", "array too large (upper bound at most 4095)"},
+    ErrorCase{"DIM a(n) AS INTEGER\n", 1, 7, "n", "an array size must be an integer constant"},
+    ErrorCase{"DIM 5 AS INTEGER\n", 1, 5, "5", "expected a variable name"},
+    ErrorCase{"END\nINTERRUPT CHAR\nPRINT 1\n", 2, 1, "INTERRUPT", "INTERRUPT CHAR has no END INTERRUPT"},
+    ErrorCase{"END\nINTERRUPT CHAR\nEND INTERRUPT\nHere:\n", 4, 1, "Here",
+              "only INTERRUPT routines may follow the interrupt routines"},
+    ErrorCase{"END\nSUB 5\nEND SUB\n", 2, 5, "5", "expected a SUB name"},
+    ErrorCase{"CALL 5\n", 1, 6, "5", "expected a SUB name"},
+    ErrorCase{"GOTO 5\n", 1, 6, "5", "expected a label"},
+    ErrorCase{"= 5\n", 1, 1, "=", "expected a statement"},
+    ErrorCase{"GO.VEL 5\n", 1, 8, "5", "unexpected '5' after the statement"},
+    ErrorCase{"END SUB\n", 1, 1, "END", "END SUB without SUB"},
+    ErrorCase{"IF 1 THEN\nELSE\nELSE IF 1 THEN\nEND IF\n", 3, 1, "ELSE", "ELSE IF after ELSE"},
+    ErrorCase{"DIM i AS INTEGER\nFOR i = 1 TO \"x\"\nNEXT\n", 2, 14, "\"x\"", "FOR needs numbers"},
+    ErrorCase{"DIM i AS INTEGER\nFOR i = 1 TO 3 STEP \"x\"\nNEXT\n", 2, 21, "\"x\"", "FOR needs numbers"},
+    // SWAP writes both: another axis's variable is refused where it is named (SWAP never reaches PacLAN)
+    ErrorCase{"SWAP RUN.SPEED, RUN.SPEED[3]\n", 1, 17, "RUN.SPEED", "another axis's RUN.SPEED is read-only"},
+    ErrorCase{"SWAP 1, 2\n", 1, 6, "1", "expected a variable"},
+    ErrorCase{"DIM s AS STRING\ns = LEFT$(3, 1)\n", 2, 11, "3", "LEFT$ needs a string here"},
+    ErrorCase{"DIM s AS STRING\ns = UCASE$(\"a\") + STR$(\"b\")\n", 2, 24, "\"b\"", "STR$ needs a number here"},
+    ErrorCase{"DIM i AS INTEGER\ni = -\"a\"\n", 2, 5, "-", "needs a number"},
+    ErrorCase{"TMRSET(1, LEVEL, 1, INP1=1, OUT1=1)\n", 1, 21, "INP1", "expected OUTn = 0|1"},
+    ErrorCase{"TMRSET(1, LEVEL, 1, OUT1=2, INP1=1)\n", 1, 26, "2", "expected 0 or 1"},
+    ErrorCase{"TMRSET(1, LEVEL, 1, OUT1=1, INP1=1, POUT2=3)\n", 1, 43, "3", "expected 0 or 1"},
+    ErrorCase{"DIM a(3) AS INTEGER\nPRINT a\n", 2, 7, "a", "a is an array: give an index in ( )"},
+    ErrorCase{"PRINT 1 + THEN\n", 1, 11, "THEN", "unexpected THEN"},
+    ErrorCase{"END\nLoop1:\nGOTO Loop1\nSUB A\nGOTO Loop1\nEND SUB\n", 5, 6, "Loop1", "GOTO LOOP1 leaves its SUB or routine"}
 ));
 // clang-format on
 
@@ -240,6 +268,18 @@ TEST(Sc750Compiler, SizeLimitsOfStandardAndTurboModels) {
     const CompileResult data = compile("DIM s(100) AS STRING\nEND\n", CompileOptions{true});
     ASSERT_FALSE(data.ok());
     EXPECT_NE(data.error->message.find("too much data"), std::string::npos);
+}
+
+TEST(Sc750Compiler, TurboCodeLimitIsReportedAtTheMainProgramsEnd) { // L2648
+    std::string program = "DIM a AS INTEGER\n";
+    for (int i = 0; i < 3000; ++i) program += "a = a + " + std::to_string(i) + "\n"; // 20 bytes each
+    program += "  END\nEND\nSUB Never\nEND SUB\n";
+    const CompileResult r = compile(program, CompileOptions{true});
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error->line, 3002);
+    EXPECT_EQ(r.error->column, 3);
+    EXPECT_EQ(r.error->near, "END");
+    EXPECT_NE(r.error->message.find("bytes of code, a turbo SC750 holds 57,216"), std::string::npos) << r.error->text();
 }
 
 } // namespace
