@@ -120,10 +120,10 @@ private slots:
         plan.samples = 500;
         plan.intervalMs = 1;
         plan.variables = {QStringLiteral("VCMD"), QStringLiteral("PFB")};
+        bool playSent = false; // before the capture: its lambdas go with it
+        qsizetype listed = 0;
         Bds5RecordPlay capture(*connection.session(), plan);
         QSignalSpy finished(&capture, &Bds5Transfer::finished);
-        bool playSent = false;
-        qsizetype listed = 0;
         connect(&connection, &app::DriveConnection::rawSent, &capture,
                 [&playSent](const QByteArray& b) { playSent |= b.startsWith("PLAY"); });
         connect(&connection, &app::DriveConnection::rawReceived, &capture,
@@ -163,12 +163,15 @@ private slots:
             if (!polling || !connection.session()) return;
             pending = connection.session()->send(QStringLiteral("P VCMD"), Bds5Session::Echo::Quiet);
         };
-        connect(connection.session(), &Bds5Session::finished, &window, [&](quint64 id, const Bds5Response&) {
+        // The lambdas below write to the locals above: they must be cut off before those go, not when the
+        // window does (its session fails what is still queued as it closes — heap damage otherwise).
+        QObject listener;
+        connect(connection.session(), &Bds5Session::finished, &listener, [&](quint64 id, const Bds5Response&) {
             if (id != pending) return;
             ++answered;
             poll();
         });
-        connect(connection.session(), &Bds5Session::failed, &window, [&](quint64 id, const QString& why) {
+        connect(connection.session(), &Bds5Session::failed, &listener, [&](quint64 id, const QString& why) {
             if (id != pending) return;
             ++failed;
             failure = why;
