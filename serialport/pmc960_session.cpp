@@ -143,12 +143,12 @@ void Pmc960Session::learnAxisId(char id) {
 // A CR asks for a prompt; after resynchronise() it is preceded by the bytes asked for and, once the
 // controller has stayed silent twice, by <attn><ID> (talker again, in no checksum).
 void Pmc960Session::askForPrompt() {
-    if (!m_resync.isEmpty()) {
-        // Only a controller that stays silent gets <attn><ID>: were the ID learnt wrong, it would deselect one
-        // that answers.
-        if (++m_silentAsks > 2) write(QByteArray(1, kAttention) + m_axisId, false);
-        write(m_resync, true);
-    }
+    // Only a controller that stays silent gets <attn><ID>: were the ID learnt wrong, it would deselect one
+    // that answers. Silent after any failure, not only a resynchronised download: a damaged byte that
+    // arrived as 1DH and another axis's ID deselects the controller, and CRs alone never wake it
+    // (serialport.pmc960_download_campaign: a lane left without a prompt for good).
+    if (++m_silentAsks > 2) write(QByteArray(1, kAttention) + m_axisId, false);
+    if (!m_resync.isEmpty()) write(m_resync, true);
     write("\r", true);
 }
 

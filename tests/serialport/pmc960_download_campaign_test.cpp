@@ -85,8 +85,11 @@ private:
             if (m_session.state() == Pmc960Session::State::Ready) return download();
             if (waited->elapsed() > 10000) {
                 ++m_tally.leftStuck;
-                qWarning("no prompt from the controller 10 s after a download (session state %d)",
-                         int(m_session.state()));
+                const auto& pmc = dynamic_cast<drive_core::pmc960::Pmc960Drive&>(m_drive.drive());
+                qWarning("no prompt from the controller 10 s after a download (session state %d; controller "
+                         "talker %d, established %d, axis '%c', session's '%c')",
+                         int(m_session.state()), int(pmc.talker()), int(pmc.sciEstablished()), pmc.state().axisId(),
+                         m_session.axisId());
                 return finishLane();
             }
             QTimer::singleShot(20, this, *check);
