@@ -20,8 +20,11 @@ public:
     void reset();
     void setLoop(Loop loop) { m_loop = loop; }
 
-    // Modes 0-3 (SM, L1577-1601). SM2 clears the PSJ (at rest the absolute position takes up the error);
-    // SM3 keeps it; SM0 stops the reference and disables the drive.
+    // Modes 0-3 (SM, L1577-1601, L212-223). SM0 stops the reference and disables the drive, the PSJ keeping
+    // its count. SM1 (velocity): the PSJ is cleared and not summed; the motor runs at TGF/128 of the
+    // commanded speed with no position loop, so it drifts from the absolute position and never trips.
+    // SM2 clears the PSJ; at rest and without an overflow the absolute position takes up the error (the
+    // reference moves to the motor). SM3 keeps the PSJ: the motor jumps to where its count is cancelled.
     void setMode(int mode);
     int mode() const { return m_mode; }
     bool enabled() const { return m_mode != 0; }
@@ -71,7 +74,8 @@ public:
     bool atTopSpeed() const { return moving() && !waitingForSensor() && m_generator.acceleration() == 0; }
     double commanded_counts() const { return m_generator.position(); }
     double target_counts() const { return m_generator.finalPosition(); }
-    double actual_counts() const { return m_generator.position() - m_error_counts; }
+    // The motor's position (feedback); in position modes it trails the reference by the PSJ's count.
+    double actual_counts() const { return m_actual_counts; }
     double velocity_cps() const { return m_generator.velocity(); }
     double acceleration_cps2() const { return m_generator.acceleration(); }
     double followingError_counts() const { return m_error_counts; }
@@ -82,7 +86,9 @@ private:
     motion::ProfileGenerator m_generator;
     Loop m_loop;
     int m_mode = 0;
-    double m_error_counts = 0;
+    double m_error_counts = 0;  // the PSJ
+    double m_actual_counts = 0; // the motor
+    bool m_overflow = false;    // the PSJ passed the trip point; cleared by SM1 and SM2
     double m_trip_counts = 2048;
     bool m_forward = true;
     struct CamSegment {
