@@ -18,6 +18,7 @@ int hexValue(char c) {
     return std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : upper(c) - 'A' + 10;
 }
 constexpr std::int64_t kMax31 = 2147483647;
+constexpr std::int64_t kMax30 = std::int64_t(1) << 30; // go and normalize positions (5.7)
 } // namespace
 
 bool Pmc960Interpreter::writable() {
@@ -55,15 +56,18 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
     const double accel = units.accel_cps2(double(reg.acceleration));
     if (command == 'J' && numberGiven()) {
         if (number() < 1 || number() > std::int64_t(units.maximumUserVelocity())) return fail(0x94), false;
+        if (units.velocityTooSmall(double(number()))) return fail(0x98), false;
         reg.jogSpeed = number();
     }
     if (command == 'I' && numberGiven()) {
         if (number() < 1 || number() > kMax31) return fail(0x91), false;
+        if (units.positionOverflows(double(number()), double(kMax31))) return fail(0x99), false;
         reg.distance = number();
     }
     if (command == 'G') {
         const std::int64_t position = numberGiven() ? number() : 0;
-        if (position > (std::int64_t(1) << 30)) return fail(0x93), false;
+        if (position > kMax30) return fail(0x93), false;
+        if (units.positionOverflows(double(position), double(kMax30))) return fail(0x99), false;
         reg.goPosition = sign * position;
     }
     if (command == 'H' && numberGiven()) {
@@ -158,7 +162,8 @@ void Pmc960Interpreter::motionArgument(char c, bool first) {
         if (cmd == 'N') {
             if (motion.moving()) return fail(0xB2);
             const std::int64_t position = (c == '-' ? -1 : 1) * (numberGiven() ? number() : 0);
-            if (std::abs(position) > (std::int64_t(1) << 30)) return fail(0x93);
+            if (std::abs(position) > kMax30) return fail(0x93);
+            if (m_state.units().positionOverflows(double(position), double(kMax30))) return fail(0x99);
             const double cancelled = motion.normalize(m_state.units().position_counts(double(position)));
             m_state.reg.normalizeError = std::llround(cancelled);
             return finish(); // N ends at its sign (L1344)
@@ -191,10 +196,12 @@ void Pmc960Interpreter::motionArgument(char c, bool first) {
             switch (cmd) {
             case 'I':
                 if (n < 1 || n > kMax31) return fail(0x91);
+                if (m_state.units().positionOverflows(double(n), double(kMax31))) return fail(0x99);
                 m_state.reg.distance = n;
                 break;
             case 'J':
                 if (n < 1 || n > std::int64_t(m_state.units().maximumUserVelocity())) return fail(0x94);
+                if (m_state.units().velocityTooSmall(double(n))) return fail(0x98);
                 m_state.reg.jogSpeed = n;
                 break;
             case 'H':
