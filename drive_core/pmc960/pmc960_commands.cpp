@@ -42,7 +42,7 @@ bool Pmc960Interpreter::motionAllowed(bool reverse) {
 }
 
 void Pmc960Interpreter::stopMotion() {
-    if (m_command == "J" && (m_state.reg.profile & 0x01) != 0) // SP bit 0: sharp jog stop
+    if (m_command == "J" && (m_state.reg.profile & 0x01) != 0 && !m_state.motion.atPositiveStop()) // SP bit 0
         m_state.motion.sharpStop();
     else
         m_state.motion.stop(m_state.units().accel_cps2(double(m_state.reg.acceleration)));
@@ -75,6 +75,7 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
         if (size > 0 && number() >= size) return fail(0x9B), false;
         reg.homeLocation = number();
     }
+    if (motion.atPositiveStop()) return fail(0xB2), false; // a stop command ends FPS first (L2347)
     if (motion.moving() && !(command == 'J' && motion.jogging())) return fail(0xB2), false;
     bool reverse = sign < 0;
     if (command == 'G') reverse = units.position_counts(double(reg.goPosition)) < motion.commanded_counts();
@@ -145,6 +146,7 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
     // SP bits 5+4: a motion from rest starts on SENSOR. chosen: the zero-reference start (bit 4 = 0) is
     // not modelled (nothing turns a motor at rest in the simulator), so that motion starts at once.
     if (fromRest && (reg.profile & 0x30) == 0x30) motion.holdForSensor();
+    motion.armPositiveStop((reg.profile & 0x80) != 0); // SP bit 7: feed to positive stop
     return true;
 }
 

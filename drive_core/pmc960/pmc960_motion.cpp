@@ -23,6 +23,7 @@ void Pmc960Motion::reset() {
 // not clear an overflow either (only SM1 or SM2 do, L2382), so after one it trips again at once.
 void Pmc960Motion::setMode(int mode) {
     if (mode == 0) {
+        m_fps = false;
         sharpStop(); // the reference stops where it is, the motor too (no coasting model); the PSJ keeps its count
     } else if (mode == 1 || mode == 2) { // the PSJ is cleared (SM1: not summed), and an overflow with it
         // SM2 at rest without an overflow: the absolute position takes up the error (L1589-1590), so the
@@ -61,7 +62,18 @@ void Pmc960Motion::jog(double velocity_cps, double accel_cps2) {
     m_generator.jog(move);
 }
 
+void Pmc960Motion::setPositiveStop(std::optional<double> position_counts) {
+    m_stop_counts = position_counts;
+    if (position_counts) m_stopAhead = *position_counts >= m_actual_counts;
+}
+
 void Pmc960Motion::stop(double decel_cps2) {
+    if (m_fps) { // ends FPS: torque off, the absolute position corrected, PSJ reset, the loop closed (L1684)
+        m_fps = false;
+        m_generator.setPosition(m_actual_counts);
+        m_error_counts = 0;
+        return;
+    }
     m_generator.setHeld(false); // a stop also cancels a start still waiting for SENSOR
     m_sensorAction = SensorAction::None;
     m_cam = false;
@@ -148,12 +160,24 @@ bool Pmc960Motion::step(double dt_s) {
         return false;
     }
     if (m_overflow) return true;
+    if (m_fps) return false; // torque against the stop: no position or velocity loop
     const double ff = std::min(1.0, m_loop.feedForwardGain / 128.0);
     const double steady = m_generator.velocity() * (1 - ff) / kv;
     const double error = m_error_counts;
     m_error_counts = steady + (m_error_counts - steady) * std::exp(-kv * dt_s);
     if (!moving() && std::abs(m_error_counts) < 0.5) m_error_counts = 0;
     m_actual_counts += moved - (m_error_counts - error);
+    if (m_stop_counts && (m_stopAhead ? m_actual_counts > *m_stop_counts : m_actual_counts < *m_stop_counts)) {
+        m_actual_counts = *m_stop_counts; // the motor stalls on the stop; the reference runs on into the PSJ
+        m_error_counts = m_generator.position() - m_actual_counts;
+    }
+    if (!moving()) m_fpsArmed = false;
+    if (std::abs(m_error_counts) > m_trip_counts && m_fpsArmed) { // at the stop: hold torque (L1676-1680)
+        m_fpsArmed = false;
+        m_fps = true;
+        sharpStop();
+        return false;
+    }
     if (std::abs(m_error_counts) > m_trip_counts) m_overflow = true; // the caller snapshots, then SM0
     return m_overflow;
 }

@@ -61,6 +61,15 @@ public:
     bool camHold() const { return m_camPending.has_value() || (m_cam && m_generator.segment() == 1); }
     static constexpr double kMaxCamRamp_s = 65.535; // a 16-bit count of milliseconds (chosen, #83)
 
+    // Feed to positive stop (SP bit 7, ST, L1655-1688). armPositiveStop: the motion just commanded may end
+    // on a stop: when its PSJ passes the trip point the reference stops and the PMC holds the ST torque
+    // instead of tripping (atPositiveStop, SS bit 6). A stop command ends it: the reference moves to the
+    // motor, the PSJ is cleared and the loop closes. setPositiveStop: a hard stop on the bench the motor
+    // cannot pass (nullopt: none).
+    void armPositiveStop(bool armed) { m_fpsArmed = armed; }
+    bool atPositiveStop() const { return m_fps; }
+    void setPositiveStop(std::optional<double> position_counts);
+
     // Advances dt; returns true when the following error exceeds the SF trip point in a position mode
     // (the caller raises #E1 and sets SM0).
     bool step(double dt_s);
@@ -88,6 +97,10 @@ private:
     int m_mode = 0;
     double m_error_counts = 0;  // the PSJ
     double m_actual_counts = 0; // the motor
+    bool m_fpsArmed = false;
+    bool m_fps = false;
+    std::optional<double> m_stop_counts; // the bench's hard stop
+    bool m_stopAhead = true;             // it lies forward of the motor
     bool m_overflow = false;    // the PSJ passed the trip point; cleared by SM1 and SM2
     double m_trip_counts = 2048;
     bool m_forward = true;
