@@ -7,6 +7,7 @@
 #include "sc750_debugger.h"
 #include "sc750_function_dialog.h"
 #include "sc750_output_dock.h"
+#include "sc750_status_display.h"
 #include "sc750_variables_dock.h"
 #include "sc750_watch_source.h"
 #include "servobasic_language.h"
@@ -38,6 +39,9 @@ Sc750Workspace::Sc750Workspace(MainWindow& window)
     m_cursorLabel->setToolTip(tr("Motion Dialogue's status line: the axis and the cursor's line and column"));
     m_cursorLabel->setContentsMargins(6, 0, 6, 0);
     m_cursorLabel->hide();
+    m_display = new Sc750StatusDisplay(*this, &window);
+    m_display->hide();
+    window.statusBar()->addPermanentWidget(m_display);
     window.statusBar()->addPermanentWidget(m_cursorLabel);
 
     connect(m_debugger, &Sc750Debugger::message, this, &FamilyWorkspace::message);
@@ -67,6 +71,7 @@ Sc750Workspace::Sc750Workspace(MainWindow& window)
             m_output->hide();
         }
         m_cursorLabel->setVisible(m_shown);
+        m_display->setVisible(m_shown);
         updateActions();
         followEditor(m_window.editor());
     });
@@ -187,6 +192,7 @@ void Sc750Workspace::onOpened() {
     send('V', {}, [this](const serialport::Sc750Reply& reply) {
         const QStringList parts = reply.payload.split(QLatin1Char(','));
         if (parts.size() >= 2) m_linkText = tr("SC%1, firmware %2").arg(parts[0], parts[1]);
+        m_display->setModel(parts.value(0));
         emit statusChanged();
     });
     send('?', {}, [this](const serialport::Sc750Reply& reply) { m_debugger->adoptDriveStatus(reply.payload); });

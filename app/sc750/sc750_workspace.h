@@ -29,6 +29,7 @@ class MainWindow;
 class Sc750Debugger;
 class Sc750ErrorSource;
 class Sc750OutputDock;
+class Sc750StatusDisplay;
 class Sc750VariablesDock;
 class WatchView;
 
@@ -54,6 +55,8 @@ public:
     Sc750Debugger& debugger() const { return *m_debugger; }
     Sc750OutputDock* outputDock() const { return m_output; }
     Sc750VariablesDock* variablesDock() const { return m_variables; }
+    // The front-panel status display in the status bar (shown while the SC750 is the chosen family).
+    Sc750StatusDisplay* statusDisplay() const { return m_display; }
     MainWindow& window() const { return m_window; }
     // Options > Axis Selection: 255 = RS-232 (default, L450), 0-254 multidrop.
     int axis() const { return m_axis; }
@@ -91,6 +94,7 @@ private:
     QMenu* m_compileMenu = nullptr;
     QMenu* m_optionsMenu = nullptr;
     QLabel* m_cursorLabel = nullptr; // "Axis 255  Line 0001 Col 01"
+    Sc750StatusDisplay* m_display = nullptr;
     QPointer<editor::ProgramEditor> m_editor;
     QHash<quint64, std::pair<Done, Failed>> m_waiting;
     QPointer<WatchView> m_watch;

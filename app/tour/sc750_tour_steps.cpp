@@ -10,6 +10,8 @@
 #include "sc750/sc750_controller_menu.h"
 #include "sc750/sc750_debugger.h"
 #include "sc750/sc750_output_dock.h"
+#include "sc750/sc750_seven_segment.h"
+#include "sc750/sc750_status_display.h"
 #include "sc750/sc750_variable_browser.h"
 #include "sc750/sc750_variables_dock.h"
 #include "sc750/sc750_workspace.h"
@@ -86,6 +88,27 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      .ready = [&window] {
                          return sc750(window)->outputDock()->text().contains(QStringLiteral("Index 3 "));
                      }});
+    // The front-panel display in the status bar: "8." (enabled, decimal point = a program runs), with the
+    // output window above it: the bottom of the window.
+    steps.push_back({.name = QStringLiteral("sc750-status-display"),
+                     .ready =
+                         [&window] {
+                             const Sc750SevenSegment* digit = sc750(window)->statusDisplay()->digit();
+                             return digit->decimalPoint() && digit->shown() == QLatin1Char('8');
+                         },
+                     .grab =
+                         [&window] {
+                             const QPixmap all = window.grab();
+                             const int height = 300 * int(all.devicePixelRatio());
+                             return all.copy(QRect(0, all.height() - height, all.width(), height));
+                         },
+                     .text =
+                         [&window] {
+                             const Sc750StatusDisplay* display = sc750(window)->statusDisplay();
+                             return display->digit()->characters() +
+                                    (display->digit()->decimalPoint() ? QStringLiteral(".") : QString()) +
+                                    QLatin1Char(' ') + display->meaning();
+                         }});
     // Watch Variables on the SC750: POSITION and VELOCITY read with G frames while the demo indexes.
     auto watch = std::make_shared<QPointer<WatchView>>();
     steps.push_back({.name = QStringLiteral("watch-sc750"),

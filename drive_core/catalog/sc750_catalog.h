@@ -94,5 +94,7 @@ inline constexpr int kFaultFollowingError = 241;
 inline constexpr int kFaultProgramMemory = 242;
 inline constexpr int kFaultRunTime = 244;
 inline constexpr int kFaultIncompatible = 246;
+// The display of an unconfigured controller (L1555): "U C" alternating, like the F codes; it has no FAULTCODE.
+inline constexpr std::string_view kUnconfiguredDisplay = "U C";
 
 } // namespace drive_core::catalog::sc750

@@ -82,6 +82,8 @@ void Pmc960Interpreter::camArgument(char c, bool first) {
     }
     const Pmc960Units units = m_state.units();
     if (speed > std::int64_t(units.maximumUserVelocity())) return fail(0x94);
+    if (units.velocityTooSmall(double(speed))) return fail(0x98);
+    if (units.positionOverflows(double(number()), double(std::int64_t(1) << 30))) return fail(0x99);
     if (speed == 0 && !motion.moving()) return fail(0x8B); // from rest to rest: nothing to ramp
     const double target = units.position_counts(double((m_sign < 0 ? -1 : 1) * number()));
     if (!motionAllowed(target < motion.commanded_counts())) return;

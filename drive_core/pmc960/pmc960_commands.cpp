@@ -18,6 +18,7 @@ int hexValue(char c) {
     return std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : upper(c) - 'A' + 10;
 }
 constexpr std::int64_t kMax31 = 2147483647;
+constexpr std::int64_t kMax30 = std::int64_t(1) << 30; // go and normalize positions (5.7)
 } // namespace
 
 bool Pmc960Interpreter::writable() {
@@ -41,7 +42,7 @@ bool Pmc960Interpreter::motionAllowed(bool reverse) {
 }
 
 void Pmc960Interpreter::stopMotion() {
-    if (m_command == "J" && (m_state.reg.profile & 0x01) != 0) // SP bit 0: sharp jog stop
+    if (m_command == "J" && (m_state.reg.profile & 0x01) != 0 && !m_state.motion.atPositiveStop()) // SP bit 0
         m_state.motion.sharpStop();
     else
         m_state.motion.stop(m_state.units().accel_cps2(double(m_state.reg.acceleration)));
@@ -55,15 +56,18 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
     const double accel = units.accel_cps2(double(reg.acceleration));
     if (command == 'J' && numberGiven()) {
         if (number() < 1 || number() > std::int64_t(units.maximumUserVelocity())) return fail(0x94), false;
+        if (units.velocityTooSmall(double(number()))) return fail(0x98), false;
         reg.jogSpeed = number();
     }
     if (command == 'I' && numberGiven()) {
         if (number() < 1 || number() > kMax31) return fail(0x91), false;
+        if (units.positionOverflows(double(number()), double(kMax31))) return fail(0x99), false;
         reg.distance = number();
     }
     if (command == 'G') {
         const std::int64_t position = numberGiven() ? number() : 0;
-        if (position > (std::int64_t(1) << 30)) return fail(0x93), false;
+        if (position > kMax30) return fail(0x93), false;
+        if (units.positionOverflows(double(position), double(kMax30))) return fail(0x99), false;
         reg.goPosition = sign * position;
     }
     if (command == 'H' && numberGiven()) {
@@ -71,6 +75,7 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
         if (size > 0 && number() >= size) return fail(0x9B), false;
         reg.homeLocation = number();
     }
+    if (motion.atPositiveStop()) return fail(0xB2), false; // a stop command ends FPS first (L2347)
     if (motion.moving() && !(command == 'J' && motion.jogging())) return fail(0xB2), false;
     bool reverse = sign < 0;
     if (command == 'G') reverse = units.position_counts(double(reg.goPosition)) < motion.commanded_counts();
@@ -141,6 +146,7 @@ bool Pmc960Interpreter::startMotion(char command, int sign) {
     // SP bits 5+4: a motion from rest starts on SENSOR. chosen: the zero-reference start (bit 4 = 0) is
     // not modelled (nothing turns a motor at rest in the simulator), so that motion starts at once.
     if (fromRest && (reg.profile & 0x30) == 0x30) motion.holdForSensor();
+    motion.armPositiveStop((reg.profile & 0x80) != 0); // SP bit 7: feed to positive stop
     return true;
 }
 
@@ -158,7 +164,8 @@ void Pmc960Interpreter::motionArgument(char c, bool first) {
         if (cmd == 'N') {
             if (motion.moving()) return fail(0xB2);
             const std::int64_t position = (c == '-' ? -1 : 1) * (numberGiven() ? number() : 0);
-            if (std::abs(position) > (std::int64_t(1) << 30)) return fail(0x93);
+            if (std::abs(position) > kMax30) return fail(0x93);
+            if (m_state.units().positionOverflows(double(position), double(kMax30))) return fail(0x99);
             const double cancelled = motion.normalize(m_state.units().position_counts(double(position)));
             m_state.reg.normalizeError = std::llround(cancelled);
             return finish(); // N ends at its sign (L1344)
@@ -191,10 +198,12 @@ void Pmc960Interpreter::motionArgument(char c, bool first) {
             switch (cmd) {
             case 'I':
                 if (n < 1 || n > kMax31) return fail(0x91);
+                if (m_state.units().positionOverflows(double(n), double(kMax31))) return fail(0x99);
                 m_state.reg.distance = n;
                 break;
             case 'J':
                 if (n < 1 || n > std::int64_t(m_state.units().maximumUserVelocity())) return fail(0x94);
+                if (m_state.units().velocityTooSmall(double(n))) return fail(0x98);
                 m_state.reg.jogSpeed = n;
                 break;
             case 'H':

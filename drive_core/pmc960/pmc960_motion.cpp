@@ -14,21 +14,23 @@ void Pmc960Motion::reset() {
     m_camPending.reset();
     m_mode = 0;
     m_error_counts = 0;
+    m_actual_counts = 0;
+    m_overflow = false;
     m_forward = true;
 }
 
+// SM3 leaves the PSJ alone: its count acts at once and the motor jumps to cancel it (L1592-1593). It does
+// not clear an overflow either (only SM1 or SM2 do, L2382), so after one it trips again at once.
 void Pmc960Motion::setMode(int mode) {
     if (mode == 0) {
-        const double actual = actual_counts();
-        m_generator = motion::ProfileGenerator{};
-        m_sensorAction = SensorAction::None;
-        m_cam = false;
-        m_camPending.reset();
-        m_generator.setPosition(actual);
+        m_fps = false;
+        sharpStop(); // the reference stops where it is, the motor too (no coasting model); the PSJ keeps its count
+    } else if (mode == 1 || mode == 2) { // the PSJ is cleared (SM1: not summed), and an overflow with it
+        // SM2 at rest without an overflow: the absolute position takes up the error (L1589-1590), so the
+        // reference is where the motor is; in motion or after an overflow the position is not adjusted.
+        if (mode == 2 && !moving() && !m_overflow) m_generator.setPosition(m_actual_counts);
         m_error_counts = 0;
-    } else if (mode == 2 && !moving()) {
-        m_generator.setPosition(actual_counts()); // PSJ cleared; absolute position adjusted by the error
-        m_error_counts = 0;
+        m_overflow = false;
     }
     m_mode = mode;
 }
@@ -60,7 +62,18 @@ void Pmc960Motion::jog(double velocity_cps, double accel_cps2) {
     m_generator.jog(move);
 }
 
+void Pmc960Motion::setPositiveStop(std::optional<double> position_counts) {
+    m_stop_counts = position_counts;
+    if (position_counts) m_stopAhead = *position_counts >= m_actual_counts;
+}
+
 void Pmc960Motion::stop(double decel_cps2) {
+    if (m_fps) { // ends FPS: torque off, the absolute position corrected, PSJ reset, the loop closed (L1684)
+        m_fps = false;
+        m_generator.setPosition(m_actual_counts);
+        m_error_counts = 0;
+        return;
+    }
     m_generator.setHeld(false); // a stop also cancels a start still waiting for SENSOR
     m_sensorAction = SensorAction::None;
     m_cam = false;
@@ -80,6 +93,7 @@ void Pmc960Motion::sharpStop() {
 double Pmc960Motion::normalize(double position_counts) {
     const double cancelled = m_error_counts;
     m_generator.setPosition(position_counts);
+    m_actual_counts = position_counts;
     m_error_counts = 0;
     return cancelled;
 }
@@ -128,7 +142,9 @@ double Pmc960Motion::remaining_counts() const {
 }
 
 bool Pmc960Motion::step(double dt_s) {
+    const double before = m_generator.position();
     m_generator.step(dt_s);
+    const double moved = m_generator.position() - before;
     if (!moving()) m_sensorAction = SensorAction::None;
     if (m_camPending && (!moving() || m_generator.segment() == 2)) { // the ramp before it has ended
         const CamSegment next = *m_camPending;
@@ -139,11 +155,31 @@ bool Pmc960Motion::step(double dt_s) {
     if (m_mode == 0) return false;
     // e' = v (1 - ff) - kv e, integrated exactly over dt: kv = 4/s per PLGAIN step (chosen), ff = FFGAIN/128.
     const double kv = std::max(1, m_loop.positionGain) * 4.0;
+    if (m_mode == 1) { // velocity loop only: the motor runs at the feedforward share of the speed, unchecked
+        m_actual_counts += moved * m_loop.feedForwardGain / 128.0;
+        return false;
+    }
+    if (m_overflow) return true;
+    if (m_fps) return false; // torque against the stop: no position or velocity loop
     const double ff = std::min(1.0, m_loop.feedForwardGain / 128.0);
     const double steady = m_generator.velocity() * (1 - ff) / kv;
+    const double error = m_error_counts;
     m_error_counts = steady + (m_error_counts - steady) * std::exp(-kv * dt_s);
     if (!moving() && std::abs(m_error_counts) < 0.5) m_error_counts = 0;
-    return m_mode >= 2 && std::abs(m_error_counts) > m_trip_counts; // the caller snapshots, then SM0
+    m_actual_counts += moved - (m_error_counts - error);
+    if (m_stop_counts && (m_stopAhead ? m_actual_counts > *m_stop_counts : m_actual_counts < *m_stop_counts)) {
+        m_actual_counts = *m_stop_counts; // the motor stalls on the stop; the reference runs on into the PSJ
+        m_error_counts = m_generator.position() - m_actual_counts;
+    }
+    if (!moving()) m_fpsArmed = false;
+    if (std::abs(m_error_counts) > m_trip_counts && m_fpsArmed) { // at the stop: hold torque (L1676-1680)
+        m_fpsArmed = false;
+        m_fps = true;
+        sharpStop();
+        return false;
+    }
+    if (std::abs(m_error_counts) > m_trip_counts) m_overflow = true; // the caller snapshots, then SM0
+    return m_overflow;
 }
 
 } // namespace drive_core::pmc960

@@ -20,8 +20,11 @@ public:
     void reset();
     void setLoop(Loop loop) { m_loop = loop; }
 
-    // Modes 0-3 (SM, L1577-1601). SM2 clears the PSJ (at rest the absolute position takes up the error);
-    // SM3 keeps it; SM0 stops the reference and disables the drive.
+    // Modes 0-3 (SM, L1577-1601, L212-223). SM0 stops the reference and disables the drive, the PSJ keeping
+    // its count. SM1 (velocity): the PSJ is cleared and not summed; the motor runs at TGF/128 of the
+    // commanded speed with no position loop, so it drifts from the absolute position and never trips.
+    // SM2 clears the PSJ; at rest and without an overflow the absolute position takes up the error (the
+    // reference moves to the motor). SM3 keeps the PSJ: the motor jumps to where its count is cancelled.
     void setMode(int mode);
     int mode() const { return m_mode; }
     bool enabled() const { return m_mode != 0; }
@@ -58,6 +61,15 @@ public:
     bool camHold() const { return m_camPending.has_value() || (m_cam && m_generator.segment() == 1); }
     static constexpr double kMaxCamRamp_s = 65.535; // a 16-bit count of milliseconds (chosen, #83)
 
+    // Feed to positive stop (SP bit 7, ST, L1655-1688). armPositiveStop: the motion just commanded may end
+    // on a stop: when its PSJ passes the trip point the reference stops and the PMC holds the ST torque
+    // instead of tripping (atPositiveStop, SS bit 6). A stop command ends it: the reference moves to the
+    // motor, the PSJ is cleared and the loop closes. setPositiveStop: a hard stop on the bench the motor
+    // cannot pass (nullopt: none).
+    void armPositiveStop(bool armed) { m_fpsArmed = armed; }
+    bool atPositiveStop() const { return m_fps; }
+    void setPositiveStop(std::optional<double> position_counts);
+
     // Advances dt; returns true when the following error exceeds the SF trip point in a position mode
     // (the caller raises #E1 and sets SM0).
     bool step(double dt_s);
@@ -71,7 +83,8 @@ public:
     bool atTopSpeed() const { return moving() && !waitingForSensor() && m_generator.acceleration() == 0; }
     double commanded_counts() const { return m_generator.position(); }
     double target_counts() const { return m_generator.finalPosition(); }
-    double actual_counts() const { return m_generator.position() - m_error_counts; }
+    // The motor's position (feedback); in position modes it trails the reference by the PSJ's count.
+    double actual_counts() const { return m_actual_counts; }
     double velocity_cps() const { return m_generator.velocity(); }
     double acceleration_cps2() const { return m_generator.acceleration(); }
     double followingError_counts() const { return m_error_counts; }
@@ -82,7 +95,13 @@ private:
     motion::ProfileGenerator m_generator;
     Loop m_loop;
     int m_mode = 0;
-    double m_error_counts = 0;
+    double m_error_counts = 0;  // the PSJ
+    double m_actual_counts = 0; // the motor
+    bool m_fpsArmed = false;
+    bool m_fps = false;
+    std::optional<double> m_stop_counts; // the bench's hard stop
+    bool m_stopAhead = true;             // it lies forward of the motor
+    bool m_overflow = false;    // the PSJ passed the trip point; cleared by SM1 and SM2
     double m_trip_counts = 2048;
     bool m_forward = true;
     struct CamSegment {

@@ -6,6 +6,7 @@ namespace drive_core::pmc960 {
 int Pmc960State::motionBits() const {
     int bits = 0;
     if (motion.enabled()) bits |= 0x80;
+    if (motion.atPositiveStop()) bits |= 0x40;
     if (motion.camHold()) bits |= 0x10;
     if (motion.moving()) bits |= 0x08;
     if (motion.atTopSpeed()) bits |= 0x04;

@@ -22,6 +22,12 @@ public:
     double maximumUserVelocity() const { return m_top_cps / m_velocity; }
     // The emergency and limit deceleration (TUB), counts/s².
     double maximumAccel_cps2() const { return m_maxAccel_cps2; }
+    // #98 (L2324): in engineering units, a speed > 0 that converts below the range's least internal speed
+    // (5.7: 2 x 10 Hz at 48 kHz, 1 x 100 Hz above; chosen) would not move.
+    bool velocityTooSmall(double user) const { return m_engineering && user > 0 && velocity_cps(user) < m_min_cps; }
+    // #99 (L2325): in engineering units, a position or distance that converts past limit_counts (5.7: index
+    // 2^31 - 1, go and normalize 2^30 counts). Without them the raw ranges (#91, #93) already hold.
+    bool positionOverflows(double user, double limit_counts) const;
 
 private:
     double m_top_cps = 192000;
@@ -29,6 +35,8 @@ private:
     double m_accel = 1000;
     double m_position = 1;
     double m_maxAccel_cps2 = 1e7;
+    double m_min_cps = 100;
+    bool m_engineering = false;
 };
 
 } // namespace drive_core::pmc960

@@ -30,6 +30,7 @@ bool Pmc960Interpreter::applyValue(const std::string& k, std::int64_t v) {
         reg.acceleration = v;
     } else if (k == "V") {
         if (!inRange(v, 1, std::int64_t(m_state.units().maximumUserVelocity()), 0x94)) return false;
+        if (m_state.units().velocityTooSmall(double(v))) return fail(0x98), false;
         reg.velocity = v;
     } else if (k == "SD") {
         if (!inRange(v, 3, 65535, 0x90)) return false;
