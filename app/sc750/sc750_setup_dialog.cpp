@@ -1,6 +1,7 @@
 // Sc750SetupDialog: the set-up screen, the Auto rule, and writing the result.
 #include "sc750_setup_dialog.h"
 
+#include "sc750_setup_data_table.h"
 #include "sc750_workspace.h"
 
 #include "main_window.h"
@@ -12,6 +13,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -30,6 +32,7 @@ namespace catalog = drive_core::catalog::sc750;
 Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
     : QDialog(parent), m_workspace(workspace), m_part(new QLineEdit), m_model(new QLabel(tr("(reading...)"))),
       m_auto(new QRadioButton(tr("&Auto"))), m_manual(new QRadioButton(tr("&Manual"))), m_response(new QComboBox),
+      m_dataBox(new QGroupBox(tr("Controller Set Up &Data"))), m_data(new Sc750SetupDataTable),
       m_table(new QTableWidget(0, 2)), m_status(new QLabel) {
     setObjectName(QStringLiteral("sc750SetupDialog"));
     setWindowTitle(tr("Controller Set Up"));
@@ -47,27 +50,36 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
     m_response->addItems({tr("Stiff/High Bandwidth"), tr("Gentle/Low Bandwidth")});
     form->addRow(tr("System &Response:"), m_response);
     layout->addLayout(form);
+    // Manual's first screen: the motor's data; the computed values below follow every edit.
+    auto* dataLayout = new QVBoxLayout(m_dataBox);
+    dataLayout->addWidget(m_data);
+    layout->addWidget(m_dataBox, 1);
+    auto* valuesBox = new QGroupBox(tr("Computed &values (PARAMS)"));
+    auto* valuesLayout = new QVBoxLayout(valuesBox);
     m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("Value")});
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
-    layout->addWidget(m_table, 1);
+    valuesLayout->addWidget(m_table);
+    layout->addWidget(valuesBox, 2);
     m_status->setWordWrap(true);
     layout->addWidget(m_status);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    m_ok = buttons->button(QDialogButtonBox::Ok);
     layout->addWidget(buttons);
     connect(buttons, &QDialogButtonBox::accepted, this, &Sc750SetupDialog::apply);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_auto, &QRadioButton::toggled, this, [this](bool on) { setManual(!on); });
-    connect(m_response, &QComboBox::currentIndexChanged, this, [this] {
-        if (m_auto->isChecked()) fillAuto();
-    });
+    connect(m_response, &QComboBox::currentIndexChanged, this, &Sc750SetupDialog::compute);
     connect(m_part, &QLineEdit::textChanged, this, [this] {
-        if (m_auto->isChecked()) fillAuto();
+        m_data->setSetupData(catalog::setupData(m_part->text().trimmed().toStdString(), false));
+        compute();
     });
-    resize(460, 560);
+    connect(m_data, &Sc750SetupDataTable::dataEdited, this, &Sc750SetupDialog::compute);
+    resize(480, 720);
+    m_data->setSetupData(catalog::SetupData{});
     m_auto->setChecked(true);
-    fillAuto();
+    compute();
     // The Options path reads the model from the controller (L2574).
     m_workspace.send(
         'V', {},
@@ -76,34 +88,40 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
             const QString model = reply.payload.section(QLatin1Char(','), 0, 0).trimmed();
             self->m_model->setText(QStringLiteral("SC%1").arg(model));
             self->m_modelNumber = model.toInt();
-            if (self->m_auto->isChecked()) self->fillAuto();
+            if (!self->m_fromProgram) self->compute();
         },
         [self = QPointer(this)](const QString& why) {
             if (self) self->m_model->setText(tr("unknown (%1)").arg(why));
         });
 }
 
-QList<QPair<QString, double>> Sc750SetupDialog::autoParameters(bool gentle, const QString& motorPart, int model) {
-    QList<QPair<QString, double>> values;
-    for (const auto& [name, value] : catalog::setupParameters(motorPart.trimmed().toStdString(), model, gentle))
-        values.append({QString::fromStdString(name), value});
-    return values;
-}
-
 void Sc750SetupDialog::setMotorPart(const QString& part) {
     m_part->setText(part);
 }
 
-void Sc750SetupDialog::fillAuto() {
-    const auto values = autoParameters(m_response->currentIndex() == 1, m_part->text(), m_modelNumber);
+void Sc750SetupDialog::compute() {
+    m_fromProgram = false;
+    const bool gentle = m_response->currentIndex() == 1;
+    catalog::SetupData setup = catalog::setupData(m_part->text().trimmed().toStdString(), gentle);
+    if (m_manual->isChecked()) {
+        const std::optional<catalog::SetupData> edited = m_data->setupData();
+        m_ok->setEnabled(edited.has_value());
+        if (!edited) {
+            setStatus(m_data->problem(), true);
+            return;
+        }
+        setup = *edited;
+        setup.gentle = gentle;
+    }
+    const auto values = catalog::setupParameters(setup, m_modelNumber);
     m_table->setRowCount(int(values.size()));
-    for (int row = 0; row < values.size(); ++row) {
-        auto* name = new QTableWidgetItem(values[row].first);
+    for (int row = 0; row < int(values.size()); ++row) {
+        auto* name = new QTableWidgetItem(QString::fromStdString(values[std::size_t(row)].first));
         name->setFlags(name->flags() & ~Qt::ItemIsEditable);
         m_table->setItem(row, 0, name);
-        m_table->setItem(row, 1, new QTableWidgetItem(QString::number(values[row].second, 'g', 9)));
+        m_table->setItem(row, 1, new QTableWidgetItem(QString::number(values[std::size_t(row)].second, 'g', 9)));
     }
-    setManual(m_manual->isChecked());
+    showMode();
 }
 
 void Sc750SetupDialog::loadParams(const QString& text) {
@@ -121,18 +139,28 @@ void Sc750SetupDialog::loadParams(const QString& text) {
                 if (m_table->item(row, 0)->text().compare(m.captured(1), Qt::CaseInsensitive) == 0)
                     m_table->item(row, 1)->setText(m.captured(2));
     }
-    setStatus(tr("The program's PARAMS values: edit them, then OK."), false);
+    m_fromProgram = true;
+    setStatus(tr("The program's PARAMS values: edit them (editing the motor's data recomputes them), then OK."), false);
 }
 
 void Sc750SetupDialog::setManual(bool manual) {
+    if (m_manual->isChecked() == manual && m_auto->isChecked() != manual) return showMode();
     m_manual->setChecked(manual);
     m_auto->setChecked(!manual);
+    compute(); // Auto: the motor table's data; Manual: the data screen, which Auto's edits never touch
+}
+
+void Sc750SetupDialog::showMode() {
+    const bool manual = m_manual->isChecked();
+    m_dataBox->setVisible(manual);
+    if (!manual) m_ok->setEnabled(true);
     for (int row = 0; row < m_table->rowCount(); ++row) {
         QTableWidgetItem* item = m_table->item(row, 1);
         item->setFlags(manual ? item->flags() | Qt::ItemIsEditable : item->flags() & ~Qt::ItemIsEditable);
     }
     if (manual) {
-        setStatus(tr("Manual: edit the values, then OK."), false);
+        setStatus(tr("Manual: edit the motor's data (the values follow), then the values if need be; OK writes them."),
+                  false);
         return;
     }
     const QString part = m_part->text().trimmed();

@@ -96,4 +96,30 @@ TEST(Sc750SetUp, AutoCapsTheCurrentAtTheMotorsPeakOnABiggerController) {        
     EXPECT_EQ(param(gentle, "ARF0"), 100);
 }
 
+// Manual set-up (L2530-L2553) runs the same rule on the user's data: KVP follows (rotor + load inertia) / Kt,
+// ILC follows L/R, SIX.THRESH and SIG.THRESH follow Kt x peak current x max speed, POLECOUNT the poles.
+TEST(Sc750SetUp, TheComputationFollowsTheSetUpData) {
+    const cat::SetupData motor = cat::setupData("R45G", false);
+    EXPECT_EQ(cat::setupParameters(motor, 752), cat::setupParameters("R45G", 752, false)); // Auto = this data
+    cat::SetupData load = motor;
+    load.loadInertia_kgcm2 = motor.rotorInertia_kgcm2; // a load as heavy as the rotor: twice the gain
+    EXPECT_NEAR(param(cat::setupParameters(load, 752), "KVP"), 2 * 0.062053, 1e-6);
+    cat::SetupData stronger = motor;
+    stronger.torqueConstant_NmPerA *= 2; // twice the torque per amp: half the gain, twice the threshold
+    EXPECT_NEAR(param(cat::setupParameters(stronger, 752), "KVP"), 0.062053 / 2, 1e-6);
+    EXPECT_NEAR(param(cat::setupParameters(stronger, 752), "SIX.THRESH"), 2 * 3147.836538, 1e-5);
+    EXPECT_NEAR(param(cat::setupParameters(stronger, 752), "SIG.THRESH"), 0.9 * 2 * 3147.836538, 1e-5);
+    cat::SetupData slow = motor;
+    slow.inductance_mH *= 2; // twice the electrical time constant
+    EXPECT_EQ(param(cat::setupParameters(slow, 752), "ILC"), 118);
+    slow.poleCount = 8;
+    slow.peak_A = 3.75; // half of SC752's 7.5 A
+    EXPECT_EQ(param(cat::setupParameters(slow, 752), "POLECOUNT"), 8);
+    EXPECT_EQ(param(cat::setupParameters(slow, 752), "ILMT.PLUS"), 50);
+    load.gentle = true;
+    EXPECT_NEAR(param(cat::setupParameters(load, 752), "KVP"), 0.062053, 1e-6);
+    // an unknown part is the boiler-plate motor: the catalog's defaults
+    EXPECT_EQ(param(cat::setupParameters(cat::setupData("X999", false), 0), "SIG.THRESH"), 387.597656);
+}
+
 } // namespace
