@@ -46,6 +46,10 @@ Sc750SetupDataTable::Sc750SetupDataTable(QWidget* parent) : QTableWidget(int(std
     horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
     horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
+    // All nine rows in view: the screen is read as a whole (the manual's is one page).
+    verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     for (int row = 0; row < rowCount(); ++row) {
         for (int column : {0, 2}) {
             auto* item = new QTableWidgetItem(column == 0 ? tr(kRows[row].label) : QString::fromUtf8(kRows[row].unit));

@@ -53,7 +53,7 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
     // Manual's first screen: the motor's data; the computed values below follow every edit.
     auto* dataLayout = new QVBoxLayout(m_dataBox);
     dataLayout->addWidget(m_data);
-    layout->addWidget(m_dataBox, 1);
+    layout->addWidget(m_dataBox);
     auto* valuesBox = new QGroupBox(tr("Computed &values (PARAMS)"));
     auto* valuesLayout = new QVBoxLayout(valuesBox);
     m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("Value")});
@@ -61,7 +61,7 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     valuesLayout->addWidget(m_table);
-    layout->addWidget(valuesBox, 2);
+    layout->addWidget(valuesBox, 1);
     m_status->setWordWrap(true);
     layout->addWidget(m_status);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
@@ -76,7 +76,7 @@ Sc750SetupDialog::Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent)
         compute();
     });
     connect(m_data, &Sc750SetupDataTable::dataEdited, this, &Sc750SetupDialog::compute);
-    resize(480, 720);
+    resize(480, 760);
     m_data->setSetupData(catalog::SetupData{});
     m_auto->setChecked(true);
     compute();

@@ -10,6 +10,8 @@
 #include "sc750/sc750_controller_menu.h"
 #include "sc750/sc750_debugger.h"
 #include "sc750/sc750_output_dock.h"
+#include "sc750/sc750_setup_data_table.h"
+#include "sc750/sc750_setup_dialog.h"
 #include "sc750/sc750_seven_segment.h"
 #include "sc750/sc750_status_display.h"
 #include "sc750/sc750_variable_browser.h"
@@ -176,20 +178,30 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      .cleanUp = [&window] {
                          if (auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))) dialog->close();
                      }});
-    steps.push_back({.name = QStringLiteral("sc750-controller-setup"),
-                     .act = [&window] {
-                         auto* menu = qobject_cast<Sc750ControllerMenu*>(sc750(window)->menus().at(1));
-                         menu->controllerSetUp();
-                     },
-                     .ready = [&window] {
-                         auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"));
-                         return dialog && dialog->isVisible() && dialog->findChild<QLabel*>() &&
-                                !dialog->findChild<QTableWidget*>()->findItems(QStringLiteral("KVP"), Qt::MatchExactly).isEmpty();
-                     },
-                     .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"))->grab(); },
-                     .cleanUp = [&window] {
-                         if (auto* dialog = window.findChild<QDialog*>(QStringLiteral("sc750SetupDialog"))) dialog->reject();
-                     }});
+    // Manual for the R45G with a load as heavy as its rotor: the set-up data above, the computed values below.
+    steps.push_back(
+        {.name = QStringLiteral("sc750-controller-setup"),
+         .act =
+             [&window] {
+                 auto* menu = qobject_cast<Sc750ControllerMenu*>(sc750(window)->menus().at(1));
+                 auto* dialog = qobject_cast<Sc750SetupDialog*>(menu->controllerSetUp());
+                 dialog->setMotorPart(QStringLiteral("R45G"));
+                 dialog->setManual(true);
+                 dialog->setupDataTable()
+                     ->valueItem(QStringLiteral("Load inertia"))
+                     ->setText(QStringLiteral("1.84313"));
+             },
+         .ready =
+             [&window] {
+                 auto* dialog = window.findChild<Sc750SetupDialog*>(QStringLiteral("sc750SetupDialog"));
+                 return dialog && dialog->isVisible() && dialog->controllerModel() != 0 &&
+                        !dialog->table()->findItems(QStringLiteral("KVP"), Qt::MatchExactly).isEmpty();
+             },
+         .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"))->grab(); },
+         .cleanUp =
+             [&window] {
+                 if (auto* dialog = window.findChild<QDialog*>(QStringLiteral("sc750SetupDialog"))) dialog->reject();
+             }});
     steps.push_back({.name = QStringLiteral("sc750-compile-error"),
                      .act = [&window, demo] {
                          Sc750Workspace* ws = sc750(window);
