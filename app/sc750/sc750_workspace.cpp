@@ -245,7 +245,9 @@ QString Sc750Workspace::statusText() const {
     if (isReconnecting())
         return tr("SC750 axis %1 on %2: connection lost, reconnecting\u2026").arg(m_axis).arg(m_linkText);
     if (!m_connected) return tr("SC750 axis %1, not connected").arg(m_axis);
-    return tr("%1 axis %2, %3 \u2014 %4").arg(m_linkText).arg(m_axis).arg(m_debugger->stateText(), m_link->description());
+    // The axis is in the cursor label beside it ("Axis 255 Line ..."): not said twice, so the status bar
+    // keeps room for messages such as "Breakpoint at line 12".
+    return tr("%1, %2 \u2014 %3").arg(m_linkText, m_debugger->stateText(), m_link->description());
 }
 
 bool Sc750Workspace::send(char letter, const QString& payload, Done done, Failed failed) {
