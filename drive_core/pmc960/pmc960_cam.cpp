@@ -3,11 +3,16 @@
 // segment (speed 0 stops at the position). Cam errors 81-86, 89, 8A, 8B (digest §7.1).
 #include "pmc960_interpreter.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <vector>
 
 namespace drive_core::pmc960 {
+
+namespace {
+constexpr std::int64_t kSpeedDigitsCap = 1'000'000'000'000; // past every range's maximum speed
+} // namespace
 
 using CamResult = Pmc960Motion::CamResult;
 
@@ -75,7 +80,9 @@ void Pmc960Interpreter::camArgument(char c, bool first) {
         speed = 0;
         for (const char d : m_fraction) {
             if (!std::isdigit(static_cast<unsigned char>(d))) return fail(0xA2);
-            speed = speed * 10 + (d - '0');
+            // Capped far above any speed the controller takes (#94 below), never overflowing
+            // (pmc960_drive_fuzz finding: twenty digits after the colon).
+            speed = std::min<std::int64_t>(speed * 10 + (d - '0'), kSpeedDigitsCap);
         }
     } else if (!motion.camRunning()) {
         return fail(0x81); // the previous speed is a running cam's: no cam, no change (chosen)

@@ -15,6 +15,14 @@ TEST(Pmc960Cam, KeepingTheSpeedNeedsARunningCamIs81) {
     EXPECT_FALSE(t.drive.state().motion.moving());
 }
 
+// pmc960_drive_fuzz finding: a speed of twenty digits overflowed while it was read; it is too fast (#94).
+TEST(Pmc960Cam, ASpeedOfManyDigitsIsTooFastNotAnOverflow) {
+    TestDrive t;
+    t.enable();
+    EXPECT_EQ(t.type("C1000:55555555555555555555\r"), refused("C1000:55555555555555555555", "94"));
+    EXPECT_FALSE(t.drive.state().motion.moving());
+}
+
 TEST(Pmc960Cam, ReversingWithoutStoppingIs82) {
     TestDrive t;
     t.enable();
