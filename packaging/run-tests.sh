@@ -14,4 +14,5 @@ bash packaging/run-sanitizers.sh
 bash packaging/run-fuzzers.sh
 # The .deb, installed with apt and run from its installed paths (as root only: it installs system-wide).
 if [[ $(id -u) -eq 0 ]]; then bash packaging/check-installed.sh build; fi
-ctest --preset default -j "$(nproc)"
+# Every test; one that fails is run once more and, if it then passes, printed as FLAKY: <name>.
+bash packaging/ctest-rerun.sh

@@ -1,6 +1,8 @@
 // BDS5 prompt and error-line recognition.
 #include "bds5_protocol.h"
 
+#include "drive_core/catalog/bds5_catalog.h"
+
 #include <QRegularExpression>
 
 namespace serialport {
@@ -17,6 +19,7 @@ QString modeName(Bds5Mode mode) {
     case Bds5Mode::Find: return QStringLiteral("Editor find");
     case Bds5Mode::Change: return QStringLiteral("Editor change");
     case Bds5Mode::Running: return QStringLiteral("Running");
+    case Bds5Mode::Asleep: return QStringLiteral("Asleep (multidrop)");
     }
     return {};
 }
@@ -51,13 +54,29 @@ Bds5Mode modeOfPrompt(const QString& prompt) {
     }
 }
 
+std::optional<char> addressEchoEndingIn(const QString& text) {
+    static const QRegularExpression kAddress(QStringLiteral("(?:^|\\n|>)ADDR *=? *(\\d{1,3})\\r\\n$"),
+                                             QRegularExpression::CaseInsensitiveOption);
+    const auto match = kAddress.match(text);
+    if (!match.hasMatch()) return std::nullopt;
+    const int id = match.captured(1).toInt();
+    if ((id >= '0' && id <= '9') || (id >= 'A' && id <= 'Z')) return char(id);
+    return std::nullopt;
+}
+
+// With DEP on the drive cuts its messages to 40 characters (L6104), which can leave "ERR 83 '9001'" with no
+// message: the entry is still the entry, and the message comes from the catalog.
 std::optional<Bds5ErrorLine> parseErrorLine(const QString& line) {
     static const QRegularExpression kError(
-        QStringLiteral("^\\x07?ERR (\\d+)(?: LINE (\\d+))?(?: '(.*)')?\\s+(\\S.*?)\\s*$"));
+        QStringLiteral("^\\x07?ERR (\\d+)(?: LINE (\\d+))?(?: '(.*)')?(?:\\s+(\\S.*?))?\\s*$"));
     const auto match = kError.match(line);
     if (!match.hasMatch()) return std::nullopt;
-    return Bds5ErrorLine{match.captured(1).toInt(), match.captured(2).toInt(), match.captured(3),
-                         match.captured(4)};
+    Bds5ErrorLine error{match.captured(1).toInt(), match.captured(2).toInt(), match.captured(3),
+                        match.captured(4)};
+    if (error.message.isEmpty())
+        if (const auto* info = drive_core::catalog::bds5::findError(error.code))
+            error.message = QString::fromUtf8(info->message.data(), qsizetype(info->message.size()));
+    return error;
 }
 
 int bds5CommandSilenceMs(const QString& line, Bds5Mode mode) {

@@ -9,13 +9,17 @@
 namespace serialport {
 
 // The processor modes a prompt reveals (seed-bds5 §2.3, §3). Run mode has no prompt.
-enum class Bds5Mode { Unknown, Interactive, Monitor, SingleStep, Editor, ProgramLoad, Insert, Find, Change, Running };
+// Asleep: the drive took a multidrop address (ADDR 48-57, 65-90) and answers nothing until "\" + its ID.
+enum class Bds5Mode { Unknown, Interactive, Monitor, SingleStep, Editor, ProgramLoad, Insert, Find, Change, Running, Asleep };
 
 QString modeName(Bds5Mode mode);
 
 // If text (received bytes) ends with "<cr><lf>" + a prompt, the prompt ("-->", "==>", "s-->", "A->", ...).
 std::optional<QString> trailingPrompt(const QString& text);
 Bds5Mode modeOfPrompt(const QString& prompt);
+// If text ends with the echo of a line that gives the drive a multidrop address ("ADDR 65" CR LF, "ADDR=48"):
+// the ID the drive now sleeps under until "\" + ID wakes it (L5424-5426, L5449-5451).
+std::optional<char> addressEchoEndingIn(const QString& text);
 
 struct Bds5ErrorLine {
     int code = 0;

@@ -55,8 +55,9 @@ quint64 Bds5Session::sendEscape() {
 }
 
 void Bds5Session::sendRaw(const QByteArray& bytes) {
-    // Terminal bytes wait while queued commands run (a download's lines must not get typing mixed in).
-    if (m_current || !m_queue.empty()) {
+    // Terminal bytes wait while queued commands run (a download's lines must not get typing mixed in). A
+    // sleeping multidrop drive runs nothing: what the user sends then (its wake-up) goes out at once.
+    if ((m_current || !m_queue.empty()) && m_mode != Bds5Mode::Asleep) {
         m_heldRaw.append(bytes);
         return;
     }
@@ -72,8 +73,11 @@ void Bds5Session::sendUrgent(const QByteArray& bytes) {
 
 void Bds5Session::passRaw(const QByteArray& bytes) {
     if (!m_link.isOpen()) return; // nothing to type into; the state stays Closed
-    for (const char c : bytes) {
-        if (c == '\r' || c == '\x1b' || c == '\x18') m_rawLineOpen = false;
+    // A multidrop wake-up (a backslash and the ID, L5449-5451) addresses the line; it types nothing into one.
+    for (qsizetype i = 0; i < bytes.size(); ++i) {
+        const char c = bytes.at(i);
+        if (c == '\\') ++i;
+        else if (c == '\r' || c == '\x1b' || c == '\x18') m_rawLineOpen = false;
         else if (c >= ' ') m_rawLineOpen = true;
     }
     if (bytes.contains('\r') || bytes.contains('\x1b')) {
@@ -127,6 +131,7 @@ void Bds5Session::onBytes(const QByteArray& bytes) {
     // A prompt counts only when it ends the stream and the drive then stays silent (§2.10 rule 6). In
     // program-load mode nothing but the echo comes before the l-> prompt: it counts at once, which keeps
     // a download at the wire's pace.
+    if (addressEchoEndingIn(m_tail)) return fallAsleep();
     const auto prompt = trailingPrompt(m_tail);
     if (prompt && m_current && modeOfPrompt(*prompt) == Bds5Mode::ProgramLoad) {
         m_silence.stop();
@@ -170,6 +175,31 @@ void Bds5Session::onPromptConfirmed() {
     setState(State::Ready);
     if (!m_heldRaw.isEmpty() && m_queue.empty()) sendRaw(std::exchange(m_heldRaw, {}));
     pump();
+}
+
+// The drive echoed a line that gave it a multidrop address: it now sleeps until "\\" + its ID and sends no
+// prompt (L5449-5451). The command is done; queued commands wait for the prompt the wake-up brings, and a
+// held wake-up goes out now. (Rewriting the address a drive already has is answered with a prompt, which
+// ends the sleep at once.)
+void Bds5Session::fallAsleep() {
+    m_timeout.stop();
+    m_silence.stop();
+    m_runDetect.stop();
+    m_wake.stop();
+    m_resyncing = false;
+    m_rawLineOpen = false;
+    setState(State::WaitingForPrompt);
+    if (m_mode != Bds5Mode::Asleep) {
+        m_mode = Bds5Mode::Asleep;
+        m_prompt.clear();
+        emit modeChanged(m_mode, m_prompt);
+    }
+    if (m_current) {
+        const Pending done = *m_current;
+        m_current.reset();
+        emit finished(done.id, parseResponse(done, std::exchange(m_response, {}), QString()));
+    }
+    if (!m_heldRaw.isEmpty()) passRaw(std::exchange(m_heldRaw, {}));
 }
 
 void Bds5Session::onTimeout() {

@@ -82,6 +82,7 @@ private:
     void onBytes(const QByteArray& bytes);
     void onPromptConfirmed();
     void onTimeout();
+    void fallAsleep();
     void onLinkOpened();
     void onLinkClosed();
     void pump();

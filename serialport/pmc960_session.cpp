@@ -289,14 +289,24 @@ Pmc960Response Pmc960Session::parse(const Request& request) const {
     if (text.startsWith(echo)) text.remove(0, echo.size());
     r.text = text;
     QString value = QString::fromLatin1(text);
-    const auto match = errorCodePattern().match(value);
-    if (match.hasMatch()) {
-        r.error = match.captured(1).toInt(nullptr, 16);
-        r.errorText = errorText(r.error);
-        value.remove(errorCodePattern());
+    // The command's own error is its first refusal code; an E-code (ESTOP' in motion, FAULT', ...) that
+    // happened to arrive while the command was on the line is the controller's, not the command's.
+    for (auto it = errorCodePattern().globalMatch(value); it.hasNext();) {
+        const int code = it.next().captured(1).toInt(nullptr, 16);
+        if (isAsynchronous(code))
+            r.asynchronous.push_back(code);
+        else if (r.error == 0)
+            r.error = code;
     }
+    if (r.error != 0) r.errorText = errorText(r.error);
+    value.remove(errorCodePattern());
     r.value = value.trimmed();
     return r;
+}
+
+bool Pmc960Session::isAsynchronous(int code) {
+    const auto* info = drive_core::catalog::pmc960::findError(code);
+    return info && info->asynchronous;
 }
 
 void Pmc960Session::complete() {
@@ -310,6 +320,7 @@ void Pmc960Session::complete() {
         learnAxisId(m_buffer.at(m_buffer.size() - 2));
         m_buffer.clear();
         setState(State::Ready);
+        for (const int code : response.asynchronous) emit asyncError(code, errorText(code));
         emit finished(request.id, response);
         break;
     }
@@ -334,6 +345,7 @@ void Pmc960Session::complete() {
             m_inEditor = true;
         }
         m_buffer.clear();
+        for (const int code : response.asynchronous) emit asyncError(code, errorText(code));
         emit finished(request.id, response);
         break;
     }

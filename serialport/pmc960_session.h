@@ -15,6 +15,7 @@
 
 #include <deque>
 #include <optional>
+#include <vector>
 
 namespace serialport {
 
@@ -22,8 +23,9 @@ struct Pmc960Response {
     QByteArray command; // as written
     QByteArray text;    // everything between the echo and the prompt
     QString value;      // text without error codes and CR LF: "3500" for A?
-    int error = 0;      // the #xx code (0x80..0xE3), 0 if none
+    int error = 0;      // the command's own #xx code (0x80..0xDF), 0 if none
     QString errorText;  // the catalog's message for error
+    std::vector<int> asynchronous; // E-codes that arrived while it was on the line (also sent as asyncError)
 };
 
 class Pmc960Session final : public QObject {
@@ -63,6 +65,7 @@ public:
     void resetChecksum() { m_sentSum = 0; }
 
     static QString errorText(int code);
+    static bool isAsynchronous(int code); // E0-EF: the controller's own, whatever command was on the line
 
 signals:
     void rawReceived(const QByteArray& bytes);
@@ -73,7 +76,8 @@ signals:
     void pollAnswered(quint64 id, char letter, const QString& value);
     void statusPolled(char letter, const QString& value); // from the status timer
     void failed(quint64 id, const QString& reason);
-    // An asynchronous #Ex code that arrived outside any command (at the prompt).
+    // A #xx at the prompt outside any request (a typed command's refusal, or an E-code), or an asynchronous
+    // E-code that arrived while one of our commands was on the line: never that command's error.
     void asyncError(int code, const QString& text);
 
 private:

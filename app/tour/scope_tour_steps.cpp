@@ -112,8 +112,9 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
         // The velocity loop alone at the power-up KV, driven by a true step: the loop's own response.
         panel->runner().setGain(QStringLiteral("KV"), 2000);
         panel->runner().setGain(QStringLiteral("PL"), 0);
-        window.connection().sendCommand(QStringLiteral("ACC=1000000"));
-        window.connection().sendCommand(QStringLiteral("EN"));
+        // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
+        for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
+            window.connection().sendCommand(QString::fromLatin1(line));
         TestMove move;
         move.kind = TestMove::Kind::FrequencyStep;
         move.amplitude = 500;

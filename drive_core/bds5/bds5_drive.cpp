@@ -71,7 +71,7 @@ void Bds5Drive::powerUp() {
         autobaud = true;
     if (!chooseBaudRate()) autobaud = true;
     m_port.powerUp(addressId(), autobaud, m_time);
-    m_uart.setMuted(!m_port.transmits());
+    m_uart.setMutedFromNow(!m_port.transmits());
     // Multitasking and POWER-UP$ wait until communications are established (L1919, L4559-4567).
     if (!autobaud) establishCommunications();
 }
@@ -181,10 +181,14 @@ void Bds5Drive::raiseFault(int code) {
 
 void Bds5Drive::handleByte(char c) {
     switch (m_port.accept(c, m_time)) {
-    case Bds5Port::Verdict::Drop: m_uart.setMuted(!m_port.transmits()); return;
-    case Bds5Port::Verdict::AutobaudDone: m_uart.setMuted(!m_port.transmits()); return establishCommunications();
+    // Muting starts and ends with what is written from now on: the echo sent before a '\' still goes out,
+    // and what the axis printed asleep stays unsent after it wakes (L5428).
+    case Bds5Port::Verdict::Drop: m_uart.setMutedFromNow(!m_port.transmits()); return;
+    case Bds5Port::Verdict::AutobaudDone:
+        m_uart.setMutedFromNow(!m_port.transmits());
+        return establishCommunications();
     case Bds5Port::Verdict::Woken: // "\A" answers CR LF and the prompt (L10015-10028)
-        m_uart.setMuted(false);
+        m_uart.setMutedFromNow(false);
         transmit(kCrLf);
         m_promptPending = false;
         return sendPrompt();
@@ -388,7 +392,10 @@ void Bds5Drive::sendHeldErrors(std::string_view preamble) {
 }
 
 void Bds5Drive::sendPrompt() {
-    m_port.setAxis(addressId());                // ADDR set from the terminal takes effect at once (L5424)
+    // ADDR set from the terminal takes effect at once (L5424): a new ID sleeps until '\' + ID wakes it
+    // (L5449-5451), so this prompt is not sent; the echo of the ADDR line before it still is.
+    m_port.setAxis(addressId());
+    m_uart.setMutedFromNow(!m_port.transmits());
     if (!m_uart.atLineStart()) transmit(kCrLf); // every prompt follows CR LF (L9609)
     const std::string prompt = m_mode == Bds5DriveMode::Monitor       ? std::string(kMonitorPrompt)
                                : m_mode == Bds5DriveMode::ProgramLoad ? std::string(kLoadPrompt)

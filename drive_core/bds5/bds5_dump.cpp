@@ -28,13 +28,28 @@ void dumpVariable(const Bds5State& state, const cat::VariableInfo& v, std::strin
     }
 }
 
+// A variable whose value bounds another's writes (AMAX for ACC and DEC, Table E.1).
+bool boundsOthers(const cat::VariableInfo& v) {
+    for (const cat::VariableInfo& other : cat::variables())
+        if (other.maximumVariable == v.name) return true;
+    return false;
+}
+
 } // namespace
 
+// Re-sent, the dump must restore every line (decision 8): the bounds come first, so ACC is not refused
+// against an AMAX not yet restored; ADDR comes last, so a new ID puts the drive to sleep (and deaf) only
+// after everything else has arrived.
 std::string dumpAll(const Bds5State& state) {
     std::string out;
     for (const std::string& line : state.program.lines()) out += ";" + line + "\r\n";
-    for (const cat::VariableInfo& v : cat::variables())
-        if (!isConstant(v)) dumpVariable(state, v, out);
+    enum class Pass { Bounds, Rest, Address };
+    const auto passOf = [](const cat::VariableInfo& v) {
+        return v.name == "ADDR" ? Pass::Address : boundsOthers(v) ? Pass::Bounds : Pass::Rest;
+    };
+    for (const Pass pass : {Pass::Bounds, Pass::Rest, Pass::Address})
+        for (const cat::VariableInfo& v : cat::variables())
+            if (!isConstant(v) && passOf(v) == pass) dumpVariable(state, v, out);
     return out;
 }
 

@@ -273,12 +273,20 @@ std::optional<bool> Bds5Interpreter::condition(std::span<const Entry> entries, s
     return a.value != b.value;
 }
 
-// The status word of PS/RS/PAS (Table 4.4 L4347-4356). Its place is not in the seed; chosen: after one
-// space. Motion states (JOG, PROFILE, GEAR, CAMMING) arrive with the motion engine.
+// The status word of PS/RS/PAS (Table 4.4 L4347-4356; v3 CAMMING when GEAR and CAM are on, L9468). Its
+// place is not in the seed; chosen: after one space. When several words fit the seed gives no order;
+// chosen: FAULT, then the enable chain (OFF, READY), then the mode the command comes from (CAMMING, GEAR)
+// before the motion under way (JOG, PROFILE); ACTIVE is "active, but no motion".
 std::string Bds5Interpreter::statusWord() const {
     if (m_state.variables.read("FAULT").value_or(0)) return "FAULT";
     if (!m_state.enabled) return "OFF";
-    return m_state.variables.read("REMOTE").value_or(1) ? "ACTIVE" : "READY";
+    if (!m_state.variables.read("REMOTE").value_or(1)) return "READY";
+    const bool gear = m_state.variables.read("GEAR").value_or(0) != 0;
+    if (gear && m_state.motion.camming()) return "CAMMING";
+    if (gear) return "GEAR";
+    if (m_state.motion.jogging()) return "JOG";
+    if (m_state.motion.moving()) return "PROFILE";
+    return "ACTIVE";
 }
 
 // P item item ... — texts verbatim, expressions formatted, no separators added (L4191-4358).

@@ -252,11 +252,14 @@ int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
     writeVariables(vars);
     if (m_cam.on()) vars.set(r.pcam, std::int32_t(std::llround(m_cam.pcam_counts())));
     // Software limits (L2237-2259): with PFB beyond PMAX no positive motion, below PMIN no negative motion.
-    if (vars.read(r.plim) != 0 && m_profile.moving()) {
+    // One overtravel is one ERR 23: the stop it starts keeps the motion's id while it decelerates outward,
+    // so it is not raised (nor the stop restarted) again until a new command moves outward.
+    if (vars.read(r.plim) != 0 && m_profile.moving() && m_profile.activeId() != m_overtravelId) {
         const double v = m_profile.velocity();
         const double pfb = vars.read(r.pfb);
         if ((v > 0 && pfb > vars.read(r.pmax)) || (v < 0 && pfb < vars.read(r.pmin))) {
             stop(vars);
+            m_overtravelId = m_profile.activeId();
             return 23;
         }
     }

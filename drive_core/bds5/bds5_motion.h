@@ -71,6 +71,8 @@ public:
 
     bool bufferFull() const { return m_profile.full(); }
     bool moving() const { return m_profile.moving(); }
+    // A jog runs: J, or JT/JF/CONTINUE holding a speed with no end position (PS prints JOG, Table 4.4).
+    bool jogging() const { return m_profile.jogging(); }
     // W n on the last motion command (W 0: until motion has stopped).
     bool waitDone(int segment) const { return m_profile.reached(m_profile.lastId(), segment); }
 
@@ -97,6 +99,7 @@ private:
     Bds5Cam m_cam;
     double m_macroStart = 0; // PFNL when the macro's first section was defined (for MCA)
     int m_macroId = 0;       // the profile id of the last MCGO (ERR 48 while it runs)
+    int m_overtravelId = 0;  // the motion ERR 23 stopped: its deceleration is the same event, not a new one
     bool m_gateLast = false; // the GATE input, for its rising edge
 };
 

@@ -13,8 +13,12 @@ void Bds5Port::powerUp(std::optional<char> axisId, bool autobaud, Microseconds n
 }
 
 void Bds5Port::setAxis(std::optional<char> axisId) {
+    if (axisId == m_axis) return;
     m_axis = axisId;
-    if (!axisId) m_asleep = m_broadcast = false;
+    m_broadcast = m_afterBackslash = false;
+    // A new ID puts the drive in multidrop mode asleep: it "then waits for the \A" before it answers
+    // (L5449-5451), so ADDR=66 gets no prompt until "\B". ADDR 0 is single-drop, always awake.
+    m_asleep = axisId.has_value();
 }
 
 Bds5Port::Verdict Bds5Port::accept(char c, Microseconds now) {
@@ -29,6 +33,13 @@ Bds5Port::Verdict Bds5Port::accept(char c, Microseconds now) {
     if (!m_axis) return Verdict::Process;
     if (m_afterBackslash) { // '\' + ID wakes that axis; any other character after '\' sleeps every axis
         m_afterBackslash = false;
+        // '\*' is the Axis Broadcast All (L10017-10019): every axis executes, none transmits (L5467-5469).
+        // A '*' anywhere else is the character it is (6*7 multiplies).
+        if (c == '*') {
+            m_broadcast = true;
+            m_asleep = false;
+            return Verdict::Drop;
+        }
         const bool mine = c == *m_axis;
         m_asleep = !mine;
         m_broadcast = false;
@@ -36,11 +47,6 @@ Bds5Port::Verdict Bds5Port::accept(char c, Microseconds now) {
     }
     if (c == '\\') {
         m_afterBackslash = true;
-        return Verdict::Drop;
-    }
-    if (c == '*') { // broadcast: every axis executes, none transmits (L5467-5469)
-        m_broadcast = true;
-        m_asleep = false;
         return Verdict::Drop;
     }
     return m_asleep ? Verdict::Drop : Verdict::Process;

@@ -1,5 +1,5 @@
 // The BDS5 serial port's link layer, before the line discipline: autobaud at power-up (L5292-5318),
-// multidrop addressing with '\' + ID, '\' alone and '*' broadcast (L5416-5469, L10013-10038), and the
+// multidrop addressing with '\' + ID, '\' alone and '\*' broadcast (L5416-5469, L10013-10038), and the
 // serial watchdog (WATCH/WTIME, L5328-5342).
 #pragma once
 
@@ -15,7 +15,8 @@ public:
     // Power-up: axisId set for multidrop (ADDR 48-57 or 65-90), autobaud when the drive must measure the
     // host's rate first. A multidrop drive powers up asleep.
     void powerUp(std::optional<char> axisId, bool autobaud, Microseconds now);
-    // ADDR changed while running: "immediately puts the drive in multidrop mode" (L5424).
+    // ADDR changed while running: "immediately puts the drive in multidrop mode" (L5424), asleep until
+    // '\' + the new ID wakes it (L5449-5451); ADDR 0 makes it single-drop and awake. No change, no effect.
     void setAxis(std::optional<char> axisId);
 
     enum class Verdict {

@@ -14,6 +14,7 @@ bool Bds5Uart::validBaud(int baud) {
 
 void Bds5Uart::reset(int baud) {
     m_fifo.clear();
+    m_silent.clear();
     m_head = 0;
     m_credit = 0;
     m_baud = baud;
@@ -24,30 +25,36 @@ void Bds5Uart::write(std::string_view bytes) {
     if (bytes.empty()) return;
     m_atLineStart = bytes.back() == '\n';
     if (m_unlimited && !busy()) {
-        if (!m_muted) m_sent.append(bytes);
+        if (!m_muted && !m_writeMuted) m_sent.append(bytes);
         return;
     }
     m_fifo.append(bytes);
+    m_silent.append(bytes.size(), m_writeMuted ? '1' : '0');
 }
 
 void Bds5Uart::advance(Microseconds dt) {
     m_credit += double(dt.count()) * m_baud / 10.0 / 1e6;
     const std::size_t n = std::min(m_fifo.size() - m_head, std::size_t(m_credit));
-    if (!m_muted) m_sent.append(m_fifo, m_head, n);
+    if (!m_muted)
+        for (std::size_t i = m_head; i < m_head + n; ++i)
+            if (m_silent[i] == '0') m_sent.push_back(m_fifo[i]);
     m_head += n;
     m_credit -= double(n);
     if (m_head == m_fifo.size()) { // an idle line banks no credit for later
         m_fifo.clear();
+        m_silent.clear();
         m_head = 0;
         m_credit = std::min(m_credit, 1.0);
     } else if (m_head > 4096) {
         m_fifo.erase(0, m_head);
+        m_silent.erase(0, m_head);
         m_head = 0;
     }
 }
 
 void Bds5Uart::discard() {
     m_fifo.clear();
+    m_silent.clear();
     m_head = 0;
     m_atLineStart = m_sent.empty() || m_sent.back() == '\n';
 }

@@ -20,8 +20,12 @@ public:
     void write(std::string_view bytes);
     // Lets dt of line time pass: moves what the line carried in that time to the sent buffer.
     void advance(Microseconds dt);
-    // Muted, bytes still take their time on the line but reach no one (a sleeping multidrop axis).
+    // Muted, bytes still take their time on the line but reach no one; applies to what is queued too.
     void setMuted(bool muted) { m_muted = muted; }
+    // Muted from now on: what is written while muted takes its time on the line but reaches no one, what
+    // was queued before keeps its fate (a multidrop axis falling asleep after its echo, or woken while
+    // what it printed asleep still waits: that stays unsent, L5428).
+    void setMutedFromNow(bool muted) { m_writeMuted = muted; }
     // Drops whatever has not been sent yet (Esc stopping a <BDS or DUMP listing).
     void discard();
     // Returns and clears what has left the drive.
@@ -33,13 +37,15 @@ public:
     int baud() const { return m_baud; }
 
 private:
-    std::string m_fifo; // written, from m_head on not yet sent
+    std::string m_fifo;   // written, from m_head on not yet sent
+    std::string m_silent; // per byte of m_fifo: '1' if written muted from now on (setMutedFromNow)
     std::size_t m_head = 0;
     std::string m_sent;
     double m_credit = 0; // characters the line may carry now
     int m_baud = 9600;
     bool m_atLineStart = true;
     bool m_muted = false;
+    bool m_writeMuted = false;
     bool m_unlimited = false;
 };
 

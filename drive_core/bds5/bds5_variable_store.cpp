@@ -130,8 +130,17 @@ int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, boo
     }
     const auto basic = toBasic(ref->info->unitClass, value);
     if (!basic) return 96; // SCALING OVERFLOW (L7445)
-    // Limits are kept in basic units, as the catalog's values are (chosen: one scale for both).
-    if (*basic < cat::minimumOf(*ref->info) || *basic > cat::maximumOf(*ref->info)) return 83;
+    // Limits are kept in basic units, as the catalog's values are (chosen: one scale for both). Out of
+    // them is ERR 83 BAD OR OUT OF RANGE, a parameter "too large or too small" (L7380-7382).
+    if (!cat::withinLimits(*ref->info, *basic)) return 83;
+    // Bounds that are another variable, in basic units: ACC and DEC above AMAX "will generate an error"
+    // (L2186-2188), the same ERR 83 (Table E.1: 0-AMAX); VDEFAULT up to VMAX, VOSPD up to 1.2 VMAX, ILIM up
+    // to IMAX. The bound is its value now: lowering AMAX later leaves ACC and DEC as they are (decision 2).
+    if (!ref->info->maximumVariable.empty()) {
+        if (const auto bound = cat::findVariable(ref->info->maximumVariable)) {
+            if (*basic * 100 > std::int64_t(read(*bound)) * ref->info->maximumPercent) return 83;
+        }
+    }
     set(*ref, std::int32_t(*basic));
     return 0;
 }

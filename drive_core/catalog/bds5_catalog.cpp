@@ -89,4 +89,11 @@ std::int64_t maximumOf(const VariableInfo& v) {
     return INT32_MAX;
 }
 
+bool withinLimits(const VariableInfo& v, std::int64_t basic) {
+    if (basic < minimumOf(v) || basic > maximumOf(v)) return false;
+    if (v.validValues.empty()) return true;
+    return std::any_of(v.validValues.begin(), v.validValues.end(),
+                       [basic](const ValueRange& r) { return basic >= r.low && basic <= r.high; });
+}
+
 } // namespace drive_core::catalog::bds5

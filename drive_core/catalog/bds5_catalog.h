@@ -61,6 +61,12 @@ enum class WriteCondition {
     Factory,  // protected (ERR 111)
 };
 
+// An inclusive run of values a write may take (basic units).
+struct ValueRange {
+    std::int64_t low = 0;
+    std::int64_t high = 0;
+};
+
 // Which user-unit pair scales the variable on every read and write (NUM/DEN classes).
 enum class UnitClass { None, Position, Velocity, Acceleration, Current, ExtPosition, ExtVelocity, Time, Other };
 
@@ -92,6 +98,13 @@ struct VariableInfo {
     LimitClass limits = LimitClass::Long;
     std::int64_t minimum = INT32_MIN; // used when limits == Range; filled from the class otherwise
     std::int64_t maximum = INT32_MAX;
+    // Table E.1 limits that minimum/maximum cannot say: a discrete set of valid values (ADDR "0,48-57,65-90";
+    // empty: every value in the class or range is valid), and an upper limit that is another variable's
+    // present value times maximumPercent / 100, both in basic units of the same unit class (ACC "0-AMAX",
+    // VOSPD "below 1.2 VMAX"; "": none). The drive checks both (Bds5VariableStore::write), after the class.
+    std::span<const ValueRange> validValues{};
+    std::string_view maximumVariable{};
+    std::int64_t maximumPercent = 100;
     WriteCondition write = WriteCondition::Always;
     std::int64_t powerUpValue = 0; // in basic units; the factory value for remembered variables
     Persistence persistence = Persistence::Remembered;
@@ -119,5 +132,8 @@ std::optional<VariableRef> findVariable(std::string_view upperName);
 // The inclusive limits a write is checked against (class limits or the explicit range).
 std::int64_t minimumOf(const VariableInfo& v);
 std::int64_t maximumOf(const VariableInfo& v);
+// Whether `basic` lies within minimumOf..maximumOf and, for a variable with a discrete set, in one of its
+// validValues. (maximumVariable depends on the drive's state: the variable store checks it.)
+bool withinLimits(const VariableInfo& v, std::int64_t basic);
 
 } // namespace drive_core::catalog::bds5

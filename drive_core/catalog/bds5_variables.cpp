@@ -23,6 +23,9 @@ constexpr std::int64_t kRpm100kPerS = 447400; // 100000 RPM/s x 4474 / 1000
 constexpr std::int64_t kVmax = 33554250;      // 7500 RPM x 44739 / 10
 constexpr std::int64_t kFullCurrent = 4095;   // 100 % x 4095 / 100
 
+// ADDR's valid values: 0 single-drop, 48-57 ('0'-'9') and 65-90 ('A'-'Z') multidrop (L7558, L5424-5426).
+constexpr ValueRange kAddressValues[] = {{0, 0}, {48, 57}, {65, 90}};
+
 // One entry per variable, packed by hand: clang-format would put every field on its own line.
 // clang-format off
 constexpr std::array kStandard{
@@ -43,7 +46,8 @@ constexpr std::array kStandard{
                  .description = "Acceleration rate of MA, MI, MRD, J, JT, JF and macro sections (the "
                                 "average rate with S-curves); 0 to AMAX. Initially 100000 RPM/s.",
                  .units = "ACC", .unitClass = U::Acceleration, .limits = LongPositive,
-                 .powerUpValue = kRpm100kPerS, .group = G::Velocity, .manualLines = "L7556, L1519, L2186"},
+                 .maximumVariable = "AMAX", .powerUpValue = kRpm100kPerS, .group = G::Velocity,
+                 .manualLines = "L7556, L1519, L2186"},
     VariableInfo{.name = "ACTIVE",
                  .description = "Monitor drive: on when the drive is active (READY and REMOTE on) and the "
                                 "motor is under control.",
@@ -53,7 +57,8 @@ constexpr std::array kStandard{
                  .description = "Multidrop address: 0 for single-drop, 48-57 ('0'-'9') or 65-90 ('A'-'Z') "
                                 "for multidrop, which a non-zero value selects at once. MOTION off at "
                                 "power-up forces ADDR to 0.",
-                 .limits = Range, .minimum = 0, .maximum = 90, .powerUpValue = 0, .group = G::Communication,
+                 .limits = Range, .minimum = 0, .maximum = 90, .validValues = kAddressValues, .powerUpValue = 0,
+                 .group = G::Communication,
                  .manualLines = "L7558, L1520, L5416-5469"},
     VariableInfo{.name = "ADEN", .description = "Acceleration units denominator. Initially 1000 for RPM/s.",
                  .powerUpValue = 1000, .group = G::Units, .manualLines = "L7559, L1521"},
@@ -92,7 +97,8 @@ constexpr std::array kStandard{
                  .description = "Deceleration rate of moves, jogs and macro sections; 0 to AMAX. Initially "
                                 "100000 RPM/s.",
                  .units = "ACC", .unitClass = U::Acceleration, .limits = LongPositive,
-                 .powerUpValue = kRpm100kPerS, .group = G::Velocity, .manualLines = "L7571, L1528, L2188"},
+                 .maximumVariable = "AMAX", .powerUpValue = kRpm100kPerS, .group = G::Velocity,
+                 .manualLines = "L7571, L1528, L2188"},
     VariableInfo{.name = "DEP",
                  .description = "Shorten error messages to 40 characters for the DEP-01 data entry panel.",
                  .limits = Switch, .powerUpValue = 0, .persistence = Volatile, .group = G::Communication,
@@ -162,7 +168,8 @@ constexpr std::array kStandard{
                  .description = "Set current limit: limits the peak of ICMD, 1 to IMAX; can be changed at "
                                 "any time. Initial value from the TL sheet, normally IMAX.",
                  .units = "I", .unitClass = U::Current, .limits = Range, .minimum = 1,
-                 .maximum = kFullCurrent, .powerUpValue = kFullCurrent, .group = G::Current,
+                 .maximum = kFullCurrent, .maximumVariable = "IMAX", .powerUpValue = kFullCurrent,
+                 .group = G::Current,
                  .manualLines = "L7587, L1537, L2060-2066"},
     VariableInfo{.name = "IMAX",
                  .description = "Maximum current the BDS5 can output, set at the factory for the drive "
@@ -471,9 +478,11 @@ constexpr std::array kStandard{
                  .description = "Velocity command, generated from motion commands; 0 when disabled.",
                  .units = "VEL", .unitClass = U::Velocity, .limits = None, .write = Never,
                  .persistence = Volatile, .group = G::Velocity, .manualLines = "L7662, L2036"},
-    // 1 RPM x 44739 / 10 = 4473.9, rounded
+    // 1 RPM x 44739 / 10 = 4473.9, rounded. "<VMAX" read as at most VMAX, as Table E.2's "<" bounds are
+    // (PEMAX's initial value is its limit 32767), and MA/MI accept a speed of VMAX (L7254).
     VariableInfo{.name = "VDEFAULT", .description = "MI/MA default velocity, below VMAX. Initially 1 RPM.",
-                 .units = "VEL", .unitClass = U::Velocity, .limits = LongPositive, .powerUpValue = 4474,
+                 .units = "VEL", .unitClass = U::Velocity, .limits = LongPositive, .maximumVariable = "VMAX",
+                 .powerUpValue = 4474,
                  .group = G::Velocity, .manualLines = "L7665, L1560"},
     VariableInfo{.name = "VDEN", .description = "Velocity units denominator. Initially 10 for RPM.",
                  .powerUpValue = 10, .group = G::Units, .manualLines = "L7666, L1559"},
@@ -505,11 +514,13 @@ constexpr std::array kStandard{
     VariableInfo{.name = "VOLTS", .description = "Drive voltage rating, set at the factory.",
                  .units = "Volts", .unitClass = U::Other, .limits = None, .write = Factory,
                  .powerUpValue = 230, .group = G::Limits, .manualLines = "L7673"},
-    // 1.2 x VMAX = 9000 RPM x 44739 / 10 = 40265100
+    // 1.2 x VMAX = 9000 RPM x 44739 / 10 = 40265100. Table E.1 says Long; the text caps it at 1.2 VMAX
+    // ("any level below 1.2 VMAX", L2048), which the initial value reaches, so the cap is inclusive.
     VariableInfo{.name = "VOSPD",
                  .description = "Overspeed setpoint: ERR 13 when VFB exceeds it; at most 1.2 VMAX. "
                                 "Changeable only when disabled. Initially VMAX x 1.2.",
-                 .units = "VEL", .unitClass = U::Velocity, .write = Disabled, .powerUpValue = 40265100,
+                 .units = "VEL", .unitClass = U::Velocity, .maximumVariable = "VMAX", .maximumPercent = 120,
+                 .write = Disabled, .powerUpValue = 40265100,
                  .group = G::Limits, .manualLines = "L7674, L1563, L2048-2050"},
     VariableInfo{.name = "VXAVG", .description = "Averaged VEXT over 16 milliseconds. Cannot be recorded.",
                  .units = "VEL", .unitClass = U::ExtVelocity, .limits = None, .write = Never,

@@ -53,7 +53,8 @@ CamResult Pmc960Motion::startCam(const CamSegment& segment, bool check) {
     return CamResult::Started;
 }
 
-// C[<sign>]<position>[:<speed>](<cr>|^) | C^ | C* (L1095-1117). ^ waits until the segment reaches its position.
+// C[<sign>]<position>[:<speed>](<cr>|^) | C^ | C* (L1095-1117, L1684). ^ waits until the segment reaches its
+// position. In binary input the position's last byte ends the segment as <cr> would (L1877).
 void Pmc960Interpreter::camArgument(char c, bool first) {
     Pmc960Registers& reg = m_state.reg;
     Pmc960Motion& motion = m_state.motion;
@@ -61,10 +62,9 @@ void Pmc960Interpreter::camArgument(char c, bool first) {
         m_sign = c == '+' ? 1 : -1;
         return;
     }
-    if (first && c == '*') {
+    if (first && c == '*') { // C* (c* among the stop commands, L1684) is complete like C^: no <cr> follows
         stopMotion();
-        m_triggered = true;
-        return;
+        return finish();
     }
     if (first && c == '^') return beginWait(Pmc960Wait::CamSegment, true);
     if (c == ':' && !m_colon && numberGiven()) {
@@ -72,7 +72,6 @@ void Pmc960Interpreter::camArgument(char c, bool first) {
         return;
     }
     if (collectDigit(c, false)) return;
-    if (c == '\r' && m_triggered) return finish();
     if (c != '\r' && c != '^') return fail(0xA2);
     if (!numberGiven()) return fail(0xA2);
     std::int64_t speed = reg.camSpeed;

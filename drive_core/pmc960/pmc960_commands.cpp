@@ -171,6 +171,9 @@ void Pmc960Interpreter::motionArgument(char c, bool first) {
             return finish(); // N ends at its sign (L1344)
         }
         if (!startMotion(cmd, c == '-' ? -1 : 1)) return;
+        // Encoder home (THA 0) is H[<sync>]<direction> with no <cr> (L733, L1222, examples L1246-1250): the
+        // direction completes it. Resolver H, I, J and G keep their line open for <cr>.
+        if (cmd == 'H' && m_state.table.inUse("THA") == 0) return finish();
         m_triggered = true;
         clearNumber();
         return;
@@ -182,6 +185,11 @@ void Pmc960Interpreter::motionArgument(char c, bool first) {
             return;
         }
         stopMotion();
+        // G* is one of G's display forms (L1169, L1181) and H* is written without the <cr> its neighbours
+        // H15+<cr> and H,-<cr> carry (L1214-1216, L1250): both are complete commands, acting and prompting at
+        // once. I* and J* are directions inside a line that stays open (#<direction>#, L1255, L1266, and
+        // J,-*+*- at L1296), ended by <cr>.
+        if (cmd == 'G' || cmd == 'H') return finish();
         m_triggered = true;
         return;
     case ',': beginWait(Pmc960Wait::MotionDone, false); return;

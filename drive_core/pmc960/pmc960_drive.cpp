@@ -231,7 +231,9 @@ void Pmc960Drive::deliver(char c) {
     }
     case Mode::Command: break;
     }
-    if (c == kEsc) {
+    // ESC aborts (L2535), but not as a data byte of a binary number: only 1DH has to be sent twice to be
+    // taken as data (L1879), so a distance of 27 is I<00><00><00><00><1B>.
+    if (c == kEsc && !m_interpreter.readingBinaryNumber()) {
         if (const int code = m_interpreter.escape()) raise(code);
         return;
     }

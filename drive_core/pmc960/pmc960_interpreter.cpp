@@ -186,7 +186,7 @@ std::int64_t Pmc960Interpreter::number() const {
 int Pmc960Interpreter::binaryWidth() const {
     const std::string& k = m_command;
     if (k == "I" || k == "G" || k == "N" || k == "SL" || k == "C") return 4;
-    if (k == "SM" || k == "SV" || k == "SW" || k == "SP" || (k.size() == 3 && k[0] == 'T' && k[1] == 'G')) return 1;
+    if (k == "SM" || k == "SV" || k == "SW" || k == "SP" || k == "TG") return 1; // TGP..TGL are read as TG
     if (k.size() == 3 && k[0] == 'T' && k[1] == 'H' && k != "THA") return 1;
     return 2; // V (16 bits per the example), A J H D L SF SD ST OA OB (chosen, digest §4.9)
 }
@@ -334,12 +334,13 @@ bool Pmc960Interpreter::displayChar(char c) {
 void Pmc960Interpreter::argument(char c) {
     if (m_binaryBytes > 0) { // inside a binary number every byte is data
         collectDigit(c, false);
-        // chosen: a binary number has no terminator (L1870), so it ends a value command as <cr> would;
-        // motion commands, OA, SL and TG stay open for their signs and <cr>.
-        static constexpr std::string_view kOpen = "IJGHNC";
-        const bool open = kOpen.find(m_command[0]) != std::string_view::npos || m_command == "OA" ||
-                          m_command == "SL" || m_command.substr(0, 2) == "TG";
-        if (m_binaryGiven && !open) argument('\r');
+        // A binary number has no terminator (L1877): its last byte ends the command as <cr> would, so
+        // I<00><4 bytes> sets the distance in 7 bytes (L1891-1903) as V<00><2 bytes> sets the speed in 4
+        // (L1886-1888). chosen: the commands whose sign is written after the number as that number's own
+        // sign — G (L1169), N (L1346), OA (L1371), SL (L1536) — still read it, a binary number having none;
+        // G, OA and SL then end at <cr>, N at its sign, as in ASCII.
+        const bool signFollows = m_command == "G" || m_command == "N" || m_command == "OA" || m_command == "SL";
+        if (m_binaryGiven && !signFollows) argument('\r');
         return;
     }
     const std::string& k = m_command;

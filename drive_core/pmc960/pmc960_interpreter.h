@@ -58,6 +58,8 @@ public:
     bool running() const { return m_running; }
     Pmc960Wait wait() const { return m_wait; }
     bool idle() const { return !m_running && m_wait == Pmc960Wait::None && m_phase == Phase::Idle; }
+    // Inside a NUL-prefixed binary number: the next byte is data whatever its value (only 1DH is doubled).
+    bool readingBinaryNumber() const { return m_binaryBytes > 0; }
 
     // The text a display character produces for command (upper case: "V", "SF", "TG", "SB"), kind one of
     // ? ! &. Empty if the command has no such display. Used for polls and % streams too.

@@ -185,7 +185,9 @@ void Pmc960Interpreter::valueArgument(char c, bool first) {
         m_waitUntil_us = (m_now_us / 4000 + ticks + 1) * 4000; // delay in [4 ceil(t/4), 4 ceil(t/4) + 4) ms
         return beginWait(Pmc960Wait::Dwell, true);
     }
-    const bool hexAlways = oneOf(k, {"SP", "THC", "THR", "THL", "THM", "THP", "THS"});
+    // Hex even in decimal input, but binary in binary input like every number except THC's (L1870).
+    const bool binaryIn = m_state.format().input() == NumberFormat::Binary;
+    const bool hexAlways = oneOf(k, {"SP", "THC", "THR", "THL", "THM", "THP", "THS"}) && (!binaryIn || k == "THC");
     if (collectDigit(c, hexAlways)) return;
     if (c != '\r' || !numberGiven()) return fail(0xA2);
     if (applyValue(k, number())) finish();

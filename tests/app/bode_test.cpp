@@ -66,7 +66,9 @@ private slots:
         app::TuningRunner& runner = scope.tuningPanel()->runner();
         // The velocity loop alone (PL OFF) and a command that steps within a millisecond, as for the step test.
         runner.setGain(QStringLiteral("PL"), 0);
-        w.window.connection().sendCommand(QStringLiteral("ACC=1000000"));
+        // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
+        for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
+            w.window.connection().sendCommand(QString::fromLatin1(line));
         app::TestMove move;
         move.kind = app::TestMove::Kind::FrequencyStep;
         move.amplitude = 100;

@@ -115,12 +115,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(ready(window) && lastLine(window) == QStringLiteral("-->"), kDriveTimeoutMs);
         QVERIFY2(wire.startsWith(QByteArray(AppOptions::kAutobaudReturns, '\r')), wire.constData());
 
-        // Make the drive axis A of a multidrop line, put every axis to sleep, then wake axis A up.
-        window.connection().sendCommand(QStringLiteral("ADDR 65"));
-        QTRY_VERIFY_WITH_TIMEOUT(lastLine(window) == QStringLiteral("A->") && ready(window), kDriveTimeoutMs);
-        window.connection().sendRaw("\\Z"); // another axis is addressed: this one sleeps
-        QTest::qWait(200);
+        // Make the drive axis A of a multidrop line: a new ID sleeps until "\A" wakes it (L5449-5451), so the
+        // ADDR line is echoed and no prompt follows; then wake axis A up from the options.
         QVERIFY(!window.optionsController().findChild<QAction*>(QStringLiteral("wakeUpAxisAction"))->isEnabled());
+        window.connection().sendCommand(QStringLiteral("ADDR 65"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.terminal()->text().contains(QStringLiteral("-->ADDR 65")), kDriveTimeoutMs);
         options.axis = u'A';
         options.save();
         window.optionsController().apply(options);
@@ -128,9 +127,9 @@ private slots:
         QVERIFY(wake->isEnabled());
         const QString before = window.terminal()->text();
         wake->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(window.terminal()->text().size() > before.size() && lastLine(window) == QStringLiteral("A->"),
-                                 kDriveTimeoutMs);
-        QVERIFY(wire.endsWith("\\A"));
+        QTRY_VERIFY2_WITH_TIMEOUT(window.terminal()->text().size() > before.size() && lastLine(window) == QStringLiteral("A->"),
+                                  qPrintable(window.terminal()->text().right(200)), kDriveTimeoutMs);
+        QVERIFY2(wire.endsWith("\\A"), wire.right(40).constData());
     }
 
     void cableDisconnectThenReconnect() {

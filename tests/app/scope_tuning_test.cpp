@@ -248,7 +248,9 @@ private slots:
         // below ILIM: the response is then the loop's. Run 1 at KV 1000, run 2 at KV 3000.
         runner.setGain(QStringLiteral("PL"), 0);
         runner.setGain(QStringLiteral("KV"), 1000);
-        w.window.connection().sendCommand(QStringLiteral("ACC=1000000"));
+        // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
+        for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
+            w.window.connection().sendCommand(QString::fromLatin1(line));
         app::TestMove move;
         move.amplitude = 200;
         move.durationMs = 50;
@@ -328,7 +330,9 @@ private slots:
         // The velocity loop alone (PL OFF), and ACC high enough that the 100 RPM command is a step within a
         // millisecond: the rise is then the loop's, as in the manual's bandwidth tables.
         runner.setGain(QStringLiteral("PL"), 0);
-        w.window.connection().sendCommand(QStringLiteral("ACC=1000000"));
+        // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
+        for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
+            w.window.connection().sendCommand(QString::fromLatin1(line));
         app::TestMove move;
         move.amplitude = 100;
         move.durationMs = 100;

@@ -48,6 +48,21 @@ bool writable(const QString& name) {
     return ref && ref->info->write != W::Never && ref->info->write != W::Factory;
 }
 
+// One more than `value`, unless the manual caps the variable at another's present value (VOSPD at most
+// 1.2 VMAX, ACC at most AMAX, L2048, L2186) and one more would pass it: then one less.
+QString nextValue(const QString& name, const QString& value, const app::VariableModel& model) {
+    const QByteArray n = name.toLatin1();
+    const auto ref = drive_core::catalog::bds5::findVariable(std::string_view(n.constData(), std::size_t(n.size())));
+    const qint64 up = value.toLongLong() + 1;
+    if (ref && !ref->info->maximumVariable.empty()) {
+        const QString limit = QString::fromLatin1(ref->info->maximumVariable.data(),
+                                                  qsizetype(ref->info->maximumVariable.size()));
+        if (double(up) > model.value(limit).toDouble() * double(ref->info->maximumPercent) / 100.0)
+            return QString::number(up - 2);
+    }
+    return QString::number(up);
+}
+
 bool isSwitch(const QString& name) {
     const QByteArray n = name.toLatin1();
     return drive_core::catalog::bds5::findVariable(std::string_view(n.constData(), std::size_t(n.size())))
@@ -95,7 +110,7 @@ private slots:
             if (!isSwitch(name)) QCOMPARE(page->text(name), value);
             const QString next = isSwitch(name)
                                      ? (value == QLatin1String("0") ? QStringLiteral("1") : QStringLiteral("0"))
-                                     : QString::number(value.toLongLong() + 1);
+                                     : nextValue(name, value, wizard.model());
             page->setText(name, next);
             QVERIFY2(wizard.changes().changedNames().contains(name), qPrintable(name + ' ' + next));
             chosen.insert(name, next);

@@ -75,7 +75,7 @@ const std::vector<ErrorCase> kReachable = {
     {95, {}, {"P (1"}},
     {96, {}, {"PNUM=1000000", "PMAX=1000000"}},
     {103, {}, {"BAUD 1234", "POWER", "", "ERR HIST"}}, // an invalid BAUD autobauds: the first CR
-    {104, {}, {"ADDR=65", "ABAUD=1", "POWER", "\\A", "ERR HIST"}},
+    {104, {}, {"ADDR=65", "\\A", "ABAUD=1", "POWER", "\\A", "ERR HIST"}}, // a new ADDR waits for \A
     {105, {}, {"WTIME=100", "WATCH ON", "WAIT", ""}, 200ms},
     {110, {"1$"}, {"ED", "PASS", "SECRET", "ESC", ">BDS"}},
     {111, {}, {"VMAX=1"}},

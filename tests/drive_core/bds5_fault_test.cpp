@@ -68,6 +68,26 @@ TEST(Bds5Faults, SoftwareLimitStopsButStaysEnabled) { // ERR 23, severity 2 (L22
     EXPECT_EQ(value(t, "ACTIVE"), "1");
 }
 
+// One software overtravel is one error (L2255, L7214): shown once and logged once in ERR HIST, however many
+// servo periods the stop at AMAX spends outside PMAX. A new command outward is a new overtravel.
+TEST(Bds5Faults, SoftwareOvertravelIsLoggedOncePerEvent) {
+    TestDrive t;
+    t.type("PMAX=2000\r");
+    t.type("EN\r");
+    t.type("J 1000\r", 500ms); // 1000 RPM: PFB passes 2000 counts within 0.1 s; the stop at AMAX takes 10 ms
+    const std::string shown = t.type("\r");
+    EXPECT_EQ(count(shown, "ERR 23 SOFTWARE OVERTRAVEL"), 1) << shown;
+    EXPECT_EQ(count(t.type("ERR HIST\r"), "ERR 23 SOFTWARE OVERTRAVEL"), 1);
+    EXPECT_EQ(value(t, "VCMD"), "0");
+    t.type("J 100\r", 300ms); // outward again from beyond PMAX (L2255: no positive motion)
+    EXPECT_EQ(count(t.type("\r"), "ERR 23 SOFTWARE OVERTRAVEL"), 1);
+    const std::string history = t.type("ERR HIST\r");
+    EXPECT_EQ(count(history, "ERR 23 SOFTWARE OVERTRAVEL"), 2) << history;
+    t.type("J -100\r", 300ms); // inward is allowed
+    EXPECT_EQ(t.type("\r"), "\r\n-->");
+    EXPECT_NE(value(t, "VCMD"), "0");
+}
+
 TEST(Bds5Faults, RemoteOffLeavesReadyButNotActive) { // Area 5: ACTIVE = READY and REMOTE
     TestDrive t;
     t.type("EN\r");

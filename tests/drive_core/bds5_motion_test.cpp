@@ -76,6 +76,26 @@ TEST(Bds5Motion, StopDeceleratesAtAmaxAndJogZeroAtDec) {
     EXPECT_EQ(value(t, "VCMD"), "0") << "S uses AMAX";
 }
 
+// PS names what the drive is doing (Table 4.4 L4347-4356): JOG while jogging, PROFILE while a profile
+// executes, GEAR in gear mode; ACTIVE is "active, but no motion".
+TEST(Bds5Motion, PrintStatusSaysJogProfileAndGear) {
+    TestDrive t;
+    t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
+    t.type("EN\r");
+    EXPECT_EQ(t.type("PS\r"), "PS\r\nACTIVE\r\n-->");
+    t.type("J 100\r", 50ms);
+    EXPECT_EQ(t.type("PS\r"), "PS\r\nJOG\r\n-->");
+    EXPECT_EQ(t.type("PS \"AXIS \"\r"), "PS \"AXIS \"\r\nAXIS  JOG\r\n-->") << "appended to the line";
+    t.type("S\r", 100ms);
+    EXPECT_EQ(t.type("PS\r"), "PS\r\nACTIVE\r\n-->") << "stopped";
+    t.type("MI 4000 100\r"); // 4000 counts at 100 RPM (6827 counts/s): about 0.6 s
+    EXPECT_EQ(t.type("PS\r"), "PS\r\nPROFILE\r\n-->");
+    t.wait(2000ms);
+    EXPECT_EQ(t.type("PS\r"), "PS\r\nACTIVE\r\n-->") << "the move has ended";
+    t.type("GEAR ON\r");
+    EXPECT_EQ(t.type("PS\r"), "PS\r\nGEAR\r\n-->");
+}
+
 TEST(Bds5Motion, ProgramIdlesOnAFullBufferWhileBackgroundRuns) { // examples/bds5/41, L4645-4687
     TestDrive t;
     t.download({"1$", "PLIM OFF", "EN", "MI 1000 10", "P \"FIRST MOVE PROCESSED\"", "MI 1000 10",

@@ -55,7 +55,8 @@ TEST(Bds5Serial, MotionOffAtPowerUpForcesAutobaudAndSingleDrop) {
 
 TEST(Bds5Serial, MultidropAxisSleepsUntilCalled) { // L5430-5449, L10015-10028
     TestDrive t;
-    EXPECT_EQ(t.type("ADDR=65\r"), "ADDR=65\r\nA->") << "the ID prefixes the prompt at once";
+    EXPECT_EQ(t.type("ADDR=65\r"), "ADDR=65\r\n") << "multidrop at once, asleep until \\A (L5449-5451)";
+    EXPECT_EQ(t.type("\\A"), "\r\nA->") << "the ID prefixes the prompt";
     powerCycle(t);
     EXPECT_EQ(t.type("P 1\r", 20ms), "") << "asleep: it executes but transmits nothing";
     EXPECT_EQ(t.type("\\B"), "") << "another axis is called";
@@ -63,14 +64,33 @@ TEST(Bds5Serial, MultidropAxisSleepsUntilCalled) { // L5430-5449, L10015-10028
     EXPECT_EQ(t.type("P 7\r"), "P 7\r\n           7\r\nA->");
     EXPECT_EQ(t.type("\\\r"), "") << "'\\' alone puts every axis to sleep";
     EXPECT_EQ(t.type("X1=5\r"), "");
-    EXPECT_EQ(t.type("*X2=6\r"), "") << "broadcast: executes, does not answer";
+    EXPECT_EQ(t.type("\\*X2=6\r"), "") << "broadcast (L10017-10019): executes, does not answer";
     t.type("\\A");
     EXPECT_EQ(t.type("P X2\r"), "P X2\r\n           6\r\nA->");
+    EXPECT_EQ(t.type("P 6*7\r"), "P 6*7\r\n          42\r\nA->") << "a '*' not after '\\' is no broadcast";
+}
+
+// "Setting ADDR to 65 makes this axis address "A" and automatically puts the BDS5 in Multidrop mode. This
+// axis then waits for the "\A."" (L5449-5451): the echo of the line, then nothing, not even a prompt,
+// until the host calls the new ID; what is typed meanwhile reaches an axis that does not listen.
+TEST(Bds5Serial, NewAddressSleepsUntilItsWakeUp) {
+    TestDrive t;
+    EXPECT_EQ(t.type("ADDR=66\r"), "ADDR=66\r\n") << "no B-> before \\B";
+    EXPECT_EQ(t.wait(50ms), "");
+    EXPECT_EQ(t.type("X1=5\r", 20ms), "") << "asleep: no echo, no prompt";
+    EXPECT_EQ(t.type("\\A"), "") << "another axis is called";
+    EXPECT_EQ(t.type("\\B"), "\r\nB->");
+    EXPECT_EQ(t.type("P X1 ADDR\r"), "P X1 ADDR\r\n           0          66\r\nB->")
+        << "the line typed asleep was not for this axis";
+    EXPECT_EQ(t.type("ADDR=67\r"), "ADDR=67\r\n") << "a new ID sleeps again";
+    EXPECT_EQ(t.type("\\C"), "\r\nC->");
+    EXPECT_EQ(t.type("ADDR=0\r"), "ADDR=0\r\n-->") << "single-drop answers at once";
 }
 
 TEST(Bds5Serial, MultidropPromptsOfEveryMode) {
     TestDrive t;
     t.type("ADDR=66\r");
+    t.type("\\B"); // the new ID waits for its wake-up (L5449-5451)
     EXPECT_EQ(t.type(">BDS\r"), ">BDS\r\nBl>");
     t.type("1$\r");
     t.type("D 100000\r");

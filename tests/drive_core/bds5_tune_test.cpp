@@ -65,7 +65,8 @@ TEST(Bds5Tune, Tune30StepRiseTimeImpliesThirtyHertz) {
     t.type("PLIM OFF\r"); // soft limits PMAX/PMIN are +-100 counts at first (L1548)
     t.type("TUNE 30 2\r");
     t.type("PL OFF\r");
-    t.type("ACC=1000000\r"); // with AMAX 100000 RPM/s: a 100 RPM step within 1 ms
+    t.type("AMAX=1000000\r"); // ACC may not exceed AMAX (L2186): a 100 RPM step within 0.1 ms
+    t.type("ACC=1000000\r");
     t.type("EN\r");
     t.type("RECORD 60 1 VFB\r");
     t.type("J 100\r", 100ms);

@@ -43,6 +43,16 @@ TEST(Bds5Protocol, AsynchronousErrorLine) {
     EXPECT_FALSE(parseErrorLine("ERROR MSG WAITING--COMMAND IGNORED"));
 }
 
+// With DEP on, the drive cuts an error line to 40 characters (L6104), which can leave no message at all
+// ("ERR 83 '9001'" and padding): the entry stays the entry, and the message is the manual's (L7380).
+TEST(Bds5Protocol, ErrorLineCutByDepKeepsItsEntry) {
+    const auto e = parseErrorLine("\aERR 83 '9001'                           ");
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, 83);
+    EXPECT_EQ(e->entry, QStringLiteral("9001"));
+    EXPECT_EQ(e->message, QStringLiteral("BAD OR OUT OF RANGE"));
+}
+
 // A lost prompt is noticed as soon as the drive's own command time allows, not after seconds.
 TEST(Bds5Protocol, SilenceBudgetFollowsTheCommandsTime) {
     EXPECT_LE(bds5CommandSilenceMs("X1=5", Bds5Mode::ProgramLoad), 200);

@@ -95,6 +95,28 @@ private slots:
         QVERIFY(f.raw.contains("ENTER MONITOR MODE. PUSH ESCAPE TO EXIT"));
     }
 
+    // A multidrop address puts the drive to sleep at once, with no prompt, until a backslash and its ID wake it
+    // (L5449-5451): the ADDR command is done at its echo, the next command waits (nothing goes out to a
+    // sleeping drive), and the wake-up's prompt lets it go.
+    void aMultidropAddressSleepsUntilTheWakeUp() {
+        Fixture f;
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QSignalSpy sent(&f.session, &Bds5Session::rawSent);
+        const Bds5Response r = run(f.session, QStringLiteral("ADDR 66"));
+        QVERIFY(r.errors.isEmpty());
+        QCOMPARE(f.session.mode(), Bds5Mode::Asleep);
+        QCOMPARE(f.session.state(), Bds5Session::State::WaitingForPrompt);
+        QSignalSpy finished(&f.session, &Bds5Session::finished);
+        f.session.send(QStringLiteral("P 6*7"));
+        f.session.sendRaw("\\B");
+        QVERIFY2(finished.wait(5000), f.raw.right(60).toPercentEncoding().constData());
+        QCOMPARE(finished.first().at(1).value<Bds5Response>().lines, QStringList{QStringLiteral("          42")});
+        QCOMPARE(f.session.lastPrompt(), QStringLiteral("B->"));
+        QByteArray wire;
+        for (const auto& bytes : sent) wire += bytes.at(0).toByteArray();
+        QCOMPARE(wire, QByteArray("ADDR 66\r\\BP 6*7\r"));
+    }
+
     void closingTheLinkFailsTheCommandInFlight() {
         Fixture f;
         QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);

@@ -269,6 +269,34 @@ private slots:
         QCOMPARE(errors.at(0).at(0).toInt(), 0xE0);
     }
 
+    // Regression (issue 23, app.error_log_families under load): ESTOP' opened while the status dock's OB! was
+    // on the line, and the #E0 in that command's answer was logged as "ESTOP' in motion 'OB!'". An E-code is
+    // the controller's own: it is reported as asynchronous, and the command it interrupted did not fail.
+    void anECodeDuringOurCommandIsAsynchronousNotTheCommandsError() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        link.open();
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QSignalSpy finished(&session, &Pmc960Session::finished);
+        QSignalSpy errors(&session, &Pmc960Session::asyncError);
+        session.send("OB!");
+        link.deliver("OB!00\r\n#E0\r\n=}");
+        QCOMPARE(finished.count(), 1);
+        const auto response = finished.at(0).at(1).value<Pmc960Response>();
+        QCOMPARE(response.error, 0);
+        QCOMPARE(response.value, QStringLiteral("00"));
+        QCOMPARE(errors.count(), 1);
+        QCOMPARE(errors.at(0).at(0).toInt(), 0xE0);
+        // A refusal and an E-code in one answer: the refusal is the command's, the E-code the controller's.
+        session.send("I100+");
+        link.deliver("I100+#B6#E1\r\n=}");
+        QCOMPARE(finished.count(), 2);
+        QCOMPARE(finished.at(1).at(1).value<Pmc960Response>().error, 0xB6);
+        QCOMPARE(errors.count(), 2);
+        QCOMPARE(errors.at(1).at(0).toInt(), 0xE1);
+    }
+
     // Regression (host_parsers_fuzz, corpus/host/crash-pmc960-hash-00): "#00" on a damaged line decoded as
     // error 0 with the text "unknown error", and vanished from the value. Only #80..#FF are the controller's.
     void aHashWithoutTheHighBitIsNotAnErrorCode() {

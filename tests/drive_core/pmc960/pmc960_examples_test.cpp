@@ -117,7 +117,7 @@ TEST(Pmc960Examples, Ex09HomeResolver) {
     EXPECT_EQ(t.type("H,-\r"), prompted("H,}-"));
     t.wait(3000ms);
     EXPECT_EQ(t.type("G!"), prompted("G!-4081"));
-    EXPECT_EQ(t.type("H*"), "H*");
+    EXPECT_EQ(t.type("H*"), prompted("H*")); // L1216: H* with no <cr> is a whole command
 }
 
 TEST(Pmc960Examples, Ex10HomeEncoder) {
@@ -125,12 +125,12 @@ TEST(Pmc960Examples, Ex10HomeEncoder) {
     t.writeEnable();
     t.type("THA0\r");
     t.enable();
-    t.type("H+\r");
+    EXPECT_EQ(t.type("H+"), prompted("H+")); // H[<sync>]<direction>: no <cr> with an encoder (L1222)
     t.wait(3000ms);
     EXPECT_EQ(t.type("G!"), prompted("G!4096")); // the marker
-    EXPECT_EQ(t.type("H,-\r"), prompted("H,}-"));
+    EXPECT_EQ(t.type("H,-"), prompted("H,}-"));
     t.wait(300ms);
-    EXPECT_EQ(t.type("H*\r"), prompted("H*"));
+    EXPECT_EQ(t.type("H*"), prompted("H*"));
     t.wait(100ms);
     EXPECT_FALSE(t.drive.state().motion.moving());
 }
@@ -242,7 +242,7 @@ TEST(Pmc960Examples, Ex21And22BinaryInput) {
     t.writeEnable();
     t.type("THCC0\r");
     t.type(std::string("v\0\x03\x78", 4));
-    t.type(std::string("i\0\0\0\x1d\x1d\x4c\r", 8));
+    t.type(std::string("i\0\0\0\x1d\x1d\x4c", 7)); // "total of 7 bytes sent" (L1894)
     EXPECT_EQ(t.drive.state().reg.velocity, 888);
     EXPECT_EQ(t.drive.state().reg.distance, 7500);
 }

@@ -64,13 +64,74 @@ TEST(Pmc960Protocol, BinaryInputVelocity) { // example 21, L1886-1888: v 00 03 7
     EXPECT_EQ(t.type("V?"), prompted(std::string("V?\x03\x78", 4)));
 }
 
-TEST(Pmc960Protocol, BinaryInputIndexWithDoubledAttention) { // example 22, L1894-1903
+TEST(Pmc960Protocol, BinaryInputIndexWithDoubledAttention) { // example 22, L1894-1903: 7 bytes, no <cr>
     TestDrive t;
     t.writeEnable();
     t.type("THCC0\r");
-    EXPECT_EQ(t.type(std::string("i\0\0\0\x1d\x1d\x4c\r", 8)), prompted("i"));
+    EXPECT_EQ(t.type(std::string("i\0\0\0\x1d\x1d\x4c", 7)), prompted("i")); // no terminator (L1877)
     EXPECT_EQ(t.drive.state().reg.distance, 7500);
     EXPECT_EQ(t.type("I?"), prompted(std::string("I?\0\0\x1d\x4c", 6)));
+}
+
+// No terminator is accepted after a binary number (L1877): its last byte ends the command, and what is
+// typed next is a command of its own (acceptance finding: binary I stayed open until <cr>).
+TEST(Pmc960Protocol, BinaryNumberEndsTheCommandWithoutTerminator) {
+    TestDrive t;
+    t.writeEnable();
+    t.type("THCC0\r");
+    EXPECT_EQ(t.type(std::string("i\0\0\0\x1d\x1d\x4c", 7) + std::string("v\0\x03\x78", 4)),
+              prompted("i") + prompted("v")); // L1894, then L1886
+    EXPECT_EQ(t.drive.state().reg.distance, 7500);
+    EXPECT_EQ(t.drive.state().reg.velocity, 888);
+    EXPECT_EQ(t.type(std::string("j\0\0\x32", 4)), prompted("j")); // J<speed><cr> (L1266): 16 bits
+    EXPECT_EQ(t.drive.state().reg.jogSpeed, 50);
+    EXPECT_EQ(t.type(std::string("h\0\0\x0f", 4)), prompted("h")); // H<location><cr> (L1197)
+    EXPECT_EQ(t.drive.state().reg.homeLocation, 15);
+    EXPECT_EQ(t.type(std::string("tgp\0\x11", 5)), prompted("tgp")); // TGP17<cr> (L1769): an 8-bit gain
+    EXPECT_EQ(t.drive.state().table.inUse("TGP"), 17);
+    EXPECT_EQ(t.drive.state().reg.lastError, 0);
+}
+
+TEST(Pmc960Protocol, BinaryInputHexValuesAreBinaryToo) { // all numbers binary but THC TUA TUP TUS (L1870)
+    TestDrive t;
+    t.writeEnable();
+    t.type("THCC0\r");
+    EXPECT_EQ(t.type(std::string("sp\0\x30", 4)), prompted("sp")); // SP: hex in ASCII input (L1616)
+    EXPECT_EQ(t.drive.state().reg.profile, 0x30);
+    EXPECT_EQ(t.type(std::string("ths\0\x01", 5)), prompted("ths"));
+    EXPECT_EQ(t.drive.state().table.inUse("THS"), 1);
+    EXPECT_EQ(t.type("THC00\r"), prompted("THC00")); // THC stays ASCII hex
+    EXPECT_EQ(t.drive.state().reg.lastError, 0);
+}
+
+TEST(Pmc960Protocol, BinaryCamPositionEndsTheSegment) { // C<position><cr> (L1099, L1117), no terminator (L1877)
+    TestDrive t;
+    t.writeEnable();
+    t.enable();
+    EXPECT_EQ(t.type("C1000:100\r"), prompted("C1000:100"));
+    t.type("THCC0\r");
+    EXPECT_EQ(t.type(std::string("c\0\0\0\x07\xd0", 6)), prompted("c")); // C2000 at the running speed
+    EXPECT_EQ(t.drive.state().reg.lastError, 0);
+    EXPECT_TRUE(t.drive.state().motion.camRunning());
+}
+
+TEST(Pmc960Protocol, BinaryGoStillTakesItsSign) { // G <position> [<sync>] <sign> <cr> (L1169)
+    TestDrive t;
+    t.writeEnable();
+    t.enable();
+    t.type("THCC0\r");
+    EXPECT_EQ(t.type(std::string("g\0\0\0\x01\xf4-", 7)), "g-"); // the sign is the position's (L1174)
+    EXPECT_EQ(t.type("\r"), kPrompt);
+    EXPECT_EQ(t.drive.state().reg.goPosition, -500);
+}
+
+TEST(Pmc960Protocol, BinaryDataByteEscIsData) { // only 1DH must be sent twice to be data (L1879)
+    TestDrive t;
+    t.writeEnable();
+    t.type("THCC0\r");
+    EXPECT_EQ(t.type(std::string("i\0\0\0\0\x1b", 6)), prompted("i")); // a distance of 27, not ESC
+    EXPECT_EQ(t.drive.state().reg.distance, 27);
+    EXPECT_EQ(t.drive.state().reg.lastError, 0);
 }
 
 TEST(Pmc960Protocol, BinaryOutputDoublesHash) { // L1906-1910: a data byte 23H is sent twice

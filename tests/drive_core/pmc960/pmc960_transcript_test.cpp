@@ -313,3 +313,69 @@ TEST(Pmc960Transcript, SoftwareLimitsStopMotion) { // THS1 + SL (L1555-1575)
 
 } // namespace
 } // namespace pmc960_test
+
+namespace pmc960_test {
+namespace {
+
+// Stop forms that are whole commands (acceptance finding #A2: the next command was read into the G line).
+
+TEST(Pmc960Transcript, GoStarStopsAndPromptsWithoutCr) { // G <display>, * stop system motion: L1169, L1181
+    TestDrive t;
+    t.enable();
+    t.type("G100000+\r");
+    t.wait(20ms);
+    ASSERT_TRUE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("G*"), prompted("G*")); // acts and prompts at once
+    t.wait(50ms);
+    EXPECT_FALSE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("A?"), prompted("A?4000")); // typed after G*, a command of its own
+}
+
+TEST(Pmc960Transcript, HomeStarStopsAndPromptsWithoutCr) { // H* beside H15+<cr> and H,-<cr>: L1214-1216
+    TestDrive t;
+    t.enable();
+    t.type("H4000+\r"); // at the TUH home speed: seconds to go
+    t.wait(20ms);
+    ASSERT_TRUE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("H*"), prompted("H*"));
+    t.wait(100ms);
+    EXPECT_FALSE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+}
+
+TEST(Pmc960Transcript, EncoderHomeEndsAtItsDirection) { // H [<sync>] <direction>, no <cr>: L733, L1222, L1246
+    TestDrive t;
+    t.writeEnable();
+    t.type("THA0\r");
+    t.enable();
+    EXPECT_EQ(t.type("H+"), prompted("H+"));
+    EXPECT_TRUE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+    EXPECT_EQ(t.type("H*"), prompted("H*")); // L1250
+    t.wait(100ms);
+    EXPECT_FALSE(t.drive.state().motion.moving());
+}
+
+TEST(Pmc960Transcript, CamStarStopsAndPromptsWithoutCr) { // c* among the stop commands (L1684), like C^ (L1101)
+    TestDrive t;
+    t.enable();
+    EXPECT_EQ(t.type("C1000:100\r"), prompted("C1000:100"));
+    t.wait(20ms);
+    ASSERT_TRUE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("C*"), prompted("C*"));
+    t.wait(100ms);
+    EXPECT_FALSE(t.drive.state().motion.moving());
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+}
+
+TEST(Pmc960Transcript, IndexAndJogStarStayInTheirLine) { // #<direction># then <cr>: L1255, L1266, J,-*+*- L1296
+    TestDrive t;
+    t.enable();
+    t.type("I100000+\r");
+    t.wait(20ms);
+    EXPECT_EQ(t.type("I*"), "I*"); // a direction: the line stays open for more and its <cr>
+    EXPECT_EQ(t.type("\r"), kPrompt);
+}
+
+} // namespace
+} // namespace pmc960_test
