@@ -1,6 +1,8 @@
 // Command-line parsing for servodesk.
 #include "command_line.h"
 
+#include "editing/file_types.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QTextStream>
@@ -31,6 +33,11 @@ std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
         QCoreApplication::translate("app", "The drive family: bds5 (default), sc750 or pmc960."),
         QStringLiteral("family"), QStringLiteral("bds5"));
     parser.addOptions({tour, port, baud, drive});
+    parser.addPositionalArgument(QStringLiteral("files"),
+                                 QCoreApplication::translate("app", "Programs and files to open. Without --drive, "
+                                                                    "the first program's extension chooses the "
+                                                                    "family (.bas: SC750, .mpl: PMC-960)."),
+                                 QStringLiteral("[file...]"));
     parser.process(arguments);
 
     LaunchOptions options;
@@ -48,6 +55,17 @@ std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
         return std::nullopt;
     }
     options.connection.family = *family;
+    options.files = parser.positionalArguments();
+    // chosen: without --drive, the first file that belongs to one family chooses it, as a double-click on
+    // a .bas in a file manager should open the SC750's workspace.
+    if (!parser.isSet(drive))
+        for (const QString& file : options.files) {
+            const FileType type = fileTypeOf(file);
+            if (type == FileType::Sc750Program) options.connection.family = drive_core::DriveFamily::Sc750;
+            else if (type == FileType::MplProgram) options.connection.family = drive_core::DriveFamily::Pmc960;
+            else if (type != FileType::Program && type != FileType::Variables && type != FileType::Capture) continue;
+            break;
+        }
     if (parser.isSet(port)) {
         options.connection.kind = ConnectionChoice::Kind::SerialPort;
         options.connection.portName = parser.value(port);

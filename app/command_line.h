@@ -1,4 +1,5 @@
-// The servodesk command line: --screenshot-tour DIR, --port PATH, --baud N, --help, --version.
+// The servodesk command line: [FILE...] --screenshot-tour DIR, --port PATH, --baud N, --drive F, --help,
+// --version.
 #pragma once
 
 #include "connection_choice.h"
@@ -13,6 +14,7 @@ namespace app {
 struct LaunchOptions {
     QString screenshotTourDir; // empty: no tour
     ConnectionChoice connection = ConnectionChoice::simulator();
+    QStringList files; // to open, each in its own tab (a file manager's double-click: Exec=servodesk %F)
 };
 
 // Parses arguments (argv as QStrings). --help and --version print and exit the process, as

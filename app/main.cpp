@@ -1,6 +1,8 @@
 // servodesk: the IDE's entry point. Opens the main window connected to a simulated BDS5 (or --port), or
 // runs the screenshot tour and exits.
 #include "command_line.h"
+#include "editing/document_controller.h"
+#include "editing/editor_area.h"
 #include "main_window.h"
 #include "screenshot_tour.h"
 
@@ -33,6 +35,7 @@ int main(int argc, char** argv) {
         window.restoreLayout();
         window.connectDrive(options->connection);
         window.show();
+        for (const QString& file : options->files) window.editorArea()->documents()->openFile(file);
         return QApplication::exec();
     }
 

@@ -235,7 +235,7 @@ void MainWindow::createMenus() {
     m_bds5Only << tools->menuAction();
     tools->addAction(tr("&Setup Wizard..."), this, [this] { SetupWizard::openFor(*m_connection, this); });
 
-    QMenu* capture = menuBar()->addMenu(tr("&Capture"));
+    QMenu* capture = menuBar()->addMenu(tr("Capt&ure"));
     m_captureDock->addToMenu(capture);
     m_bds5Only << capture->menuAction() << m_captureDock->toggleViewAction();
     m_optionsController->addToMenu(menuBar()->addMenu(tr("&Options")));

@@ -11,7 +11,7 @@ namespace editor {
 
 OutlineDock::OutlineDock(QWidget* parent)
     : QDockWidget(tr("Outline"), parent), m_view(new OutlineView(this)),
-      m_goToLabel(new QAction(tr("Go to &Label..."), this)) {
+      m_goToLabel(new QAction(tr("Go to La&bel..."), this)) {
     setObjectName(QStringLiteral("outlineDock"));
     setWidget(m_view);
     m_goToLabel->setShortcut(QKeySequence(tr("Ctrl+Shift+G")));

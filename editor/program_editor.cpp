@@ -9,6 +9,8 @@
 #include <QSaveFile>
 #include <QStringDecoder>
 
+#include <utility>
+
 namespace editor {
 
 namespace {
@@ -26,6 +28,59 @@ bool fitsLatin1(const QString& text) {
     for (const QChar c : text)
         if (c.unicode() > 0xff) return false;
     return true;
+}
+
+// chosen: the largest program file the editor opens. A BDS5 holds 32 K of program text, an SC750 a few
+// hundred K of source; 1 MiB leaves room for comments, and a larger file is not a drive program.
+constexpr qint64 kMaxProgramBytes = 1 << 20;
+
+struct ProgramText {
+    FileResult result;
+    QString text;
+    ProgramEditor::Encoding encoding = ProgramEditor::Encoding::Utf8;
+    bool crlf = false;
+};
+
+// A drive program's text, or why the file is not one. A binary file (a NUL byte) or an oversized one is
+// refused whole rather than shown in part, so that saving can never write back less than the file held.
+ProgramText readProgramText(const QString& path) {
+    ProgramText read;
+    const QString name = QFileInfo(path).fileName();
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        read.result = {false, ProgramEditor::tr("Cannot open %1: %2").arg(name, file.errorString())};
+        return read;
+    }
+    if (file.size() > kMaxProgramBytes) {
+        read.result = {false, ProgramEditor::tr("%1 is %L2 bytes, more than any drive program (at most %L3): it "
+                                                "was not opened.")
+                                  .arg(name)
+                                  .arg(file.size())
+                                  .arg(kMaxProgramBytes)};
+        return read;
+    }
+    const QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        read.result = {false, ProgramEditor::tr("Cannot read %1: %2").arg(name, file.errorString())};
+        return read;
+    }
+    if (const qsizetype nul = bytes.indexOf('\0'); nul >= 0) {
+        read.result = {false, ProgramEditor::tr("%1 is not a text file (a NUL byte at offset %L2 of %L3): it was "
+                                                "not opened.")
+                                  .arg(name)
+                                  .arg(nul)
+                                  .arg(bytes.size())};
+        return read;
+    }
+    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
+    read.text = utf8.decode(bytes);
+    if (utf8.hasError()) {
+        read.text = QString::fromLatin1(bytes);
+        read.encoding = ProgramEditor::Encoding::Latin1;
+    }
+    if (read.text.startsWith(QChar(0xfeff))) read.text.remove(0, 1); // a UTF-8 byte-order mark is not text
+    read.crlf = bytes.contains("\r\n");
+    return read;
 }
 } // namespace
 
@@ -73,23 +128,11 @@ void ProgramEditor::setLanguageLexer(QsciLexer* lexer) {
 }
 
 FileResult ProgramEditor::loadFile(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {false, tr("Cannot open %1: %2").arg(QFileInfo(path).fileName(), file.errorString())};
-    const QByteArray bytes = file.readAll();
-    if (file.error() != QFileDevice::NoError)
-        return {false, tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), file.errorString())};
-
-    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
-    QString text = utf8.decode(bytes);
-    m_encoding = Encoding::Utf8;
-    if (utf8.hasError()) {
-        text = QString::fromLatin1(bytes);
-        m_encoding = Encoding::Latin1;
-    }
-    if (text.startsWith(QChar(0xfeff))) text.remove(0, 1); // a UTF-8 byte-order mark is not program text
-    setEolMode(bytes.contains("\r\n") ? QsciScintilla::EolWindows : QsciScintilla::EolUnix);
-    setText(text);
+    ProgramText read = readProgramText(path);
+    if (!read.result.ok) return read.result;
+    m_encoding = read.encoding;
+    setEolMode(read.crlf ? QsciScintilla::EolWindows : QsciScintilla::EolUnix);
+    setText(read.text);
     setModified(false);
     m_filePath = path;
     return {};
@@ -138,14 +181,9 @@ FileResult ProgramEditor::saveSelectedText(const QString& path) const {
 }
 
 FileResult ProgramEditor::insertFile(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {false, tr("Cannot open %1: %2").arg(QFileInfo(path).fileName(), file.errorString())};
-    const QByteArray bytes = file.readAll();
-    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
-    QString text = utf8.decode(bytes);
-    if (utf8.hasError()) text = QString::fromLatin1(bytes);
-    if (text.startsWith(QChar(0xfeff))) text.remove(0, 1);
+    ProgramText read = readProgramText(path);
+    if (!read.result.ok) return read.result;
+    QString text = std::move(read.text);
     text.replace(QStringLiteral("\r\n"), QStringLiteral("\n"));
     if (eolMode() == QsciScintilla::EolWindows) text.replace(QLatin1Char('\n'), QStringLiteral("\r\n"));
     const QByteArray inserted = text.toUtf8();

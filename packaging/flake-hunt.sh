@@ -20,7 +20,7 @@ bad_runs=0
 for run in $(seq "$runs"); do
     rm -f "$failed_log"
     start=$(date +%s)
-    if ctest --test-dir build -j "$jobs" --timeout 600 "$@" >"build/flake-hunt-$run.log" 2>&1; then
+    if ctest --test-dir build -j "$jobs" --timeout 600 --output-on-failure "$@" >"build/flake-hunt-$run.log" 2>&1; then
         echo "run $run/$runs: all passed ($(( $(date +%s) - start )) s)"
     else
         bad_runs=$((bad_runs + 1))

@@ -15,6 +15,7 @@
 #include <QSaveFile>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <unistd.h>
@@ -75,9 +76,14 @@ void CliRunner::connectDrive() {
                                   : QStringLiteral("unknown drive \"%1\"").arg(m_options.drive));
     }
     if (m_options.simulated) {
-        m_speed = kSimulatorSpeed;
+        // A record's trigger (--then "J 1000") goes out when the drive has accepted RECORD, a host round trip
+        // later: at 20 times real time a 10 ms hiccup of a busy machine is 200 ms of drive time, a whole
+        // recording missed. With a trigger the drive runs in real time, as a real one would.
+        const bool triggered = std::any_of(m_options.commands.begin(), m_options.commands.end(),
+                                           [](const CliCommand& c) { return !c.recordThen.isEmpty(); });
+        m_speed = triggered ? 1.0 : kSimulatorSpeed;
         m_link = std::make_unique<serialport::SimulatorLink>(
-            drive_core::DriveFamily::Bds5, serialport::SimulatorLink::Options{kSimulatorSpeed, 9600, false});
+            drive_core::DriveFamily::Bds5, serialport::SimulatorLink::Options{m_speed, 9600, false});
     } else {
         m_link = std::make_unique<serialport::SerialPortLink>(m_options.port, m_options.baud);
     }

@@ -36,14 +36,14 @@ DriveActions::DriveActions(MainWindow& window) : QObject(&window), m_window(wind
                   QStringLiteral("killAction"));
     m_kill->setIcon(style->standardIcon(QStyle::SP_BrowserStop));
     m_enable = make(tr("&Enable"), tr("Enable the drive (EN)"), QString(), QStringLiteral("enableAction"));
-    m_disable = make(tr("&Disable"), tr("Disable the drive (DIS)"), QString(), QStringLiteral("disableAction"));
+    m_disable = make(tr("D&isable"), tr("Disable the drive (DIS)"), QString(), QStringLiteral("disableAction"));
     m_monitor = make(tr("&Monitor (Esc)"),
                      tr("Esc: from a running program to monitor mode (==>), and back to running"), QString(),
                      QStringLiteral("monitorAction"));
     m_singleStep = make(tr("Single-S&tep"), tr("Single-step the program (SS ON / SS OFF)"), QString(),
                         QStringLiteral("singleStepAction"));
     m_singleStep->setCheckable(true);
-    m_trace = make(tr("T&race"), tr("Trace every program line as it runs (TRC ON / TRC OFF)"), QString(),
+    m_trace = make(tr("Tr&ace"), tr("Trace every program line as it runs (TRC ON / TRC OFF)"), QString(),
                    QStringLiteral("traceAction"));
     m_trace->setCheckable(true);
     m_variableInput = make(tr("&Variable Input (^V)"), tr("^V: start the program's VARIABLE$ task"), QString(),
@@ -51,7 +51,7 @@ DriveActions::DriveActions(MainWindow& window) : QObject(&window), m_window(wind
     m_step = make(tr("Ste&p"), tr("Run the line shown at the single-step prompt (Enter)"), tr("F8"),
                   QStringLiteral("stepAction"));
     m_step->setIcon(style->standardIcon(QStyle::SP_ArrowForward));
-    m_continue = make(tr("&Continue"), tr("Leave single-step and let the program run on (SS OFF)"), tr("F9"),
+    m_continue = make(tr("C&ontinue"), tr("Leave single-step and let the program run on (SS OFF)"), tr("F9"),
                       QStringLiteral("continueAction"));
     m_continue->setIcon(style->standardIcon(QStyle::SP_MediaSeekForward));
 

@@ -89,7 +89,7 @@ void EditorActions::addCommandActions() {
     make(EditorCommand::ShowSize, tr("Size of &Editor..."), [this] { showSize(); });
 
     make(EditorCommand::DeleteWord, tr("Delete &Word"), [this] { deleteWord(); });
-    make(EditorCommand::DeleteToEndOfLine, tr("Delete to &End of Line"), [this] { deleteToEndOfLine(); });
+    make(EditorCommand::DeleteToEndOfLine, tr("Delete to End &of Line"), [this] { deleteToEndOfLine(); });
     make(EditorCommand::DeleteLine, tr("&Delete Line"), [this] { deleteLine(); });
     make(EditorCommand::UndeleteLine, tr("U&ndelete Line"), [this] { undeleteLine(); });
     make(EditorCommand::InsertLine, tr("&Insert New Line"), [this] { insertLine(); });

@@ -38,7 +38,7 @@ Sc750ControllerMenu::Sc750ControllerMenu(Sc750Workspace& workspace, QWidget* par
     addAction(tr("&Axis Selection..."), this, &Sc750ControllerMenu::selectAxis);
     addAction(tr("Download &BIN File..."), this, &Sc750ControllerMenu::downloadBinFile);
     addAction(tr("&Download Source File"), this, &Sc750ControllerMenu::downloadSource);
-    addAction(tr("U&pload Source File"), this, &Sc750ControllerMenu::uploadSource);
+    addAction(tr("Upl&oad Source File"), this, &Sc750ControllerMenu::uploadSource);
     addSeparator();
     addAction(tr("Controller &Set Up..."), this, &Sc750ControllerMenu::controllerSetUp);
     addAction(tr("&Unconfigure..."), this, &Sc750ControllerMenu::unconfigure);

@@ -124,7 +124,7 @@ void Sc750Workspace::createMenus() {
         m_variables->raise();
         m_variables->focusName();
     });
-    menu->addAction(tr("Variable B&rowser"), this, [this] { m_variables->showAllVariables(); })
+    menu->addAction(tr("Variab&le Browser"), this, [this] { m_variables->showAllVariables(); })
         ->setStatusTip(tr("Every predefined variable and parameter, grouped, with live values"));
     menu->addAction(tr("Real &Time Function Call..."), this, &Sc750Workspace::showFunctionCall);
     menu->addAction(tr("&Watch Variables..."), this, &Sc750Workspace::watchVariables)

@@ -60,12 +60,12 @@ ScopeController::ScopeController(MainWindow& window)
     m_tuningDock->setObjectName(QStringLiteral("tuningDock"));
     m_tuningDock->setWidget(m_tuning);
 
-    m_menu->addAction(tr("From &Drive..."), QKeySequence(tr("Ctrl+Shift+R")), this, &ScopeController::fromDrive);
+    m_menu->addAction(tr("From &Drive..."), QKeySequence(tr("Ctrl+Alt+D")), this, &ScopeController::fromDrive);
     m_menu->addAction(tr("View &Again"), this, &ScopeController::viewAgain);
     m_menu->addAction(tr("From Dis&k..."), this, &ScopeController::openFromDisk);
     m_menu->addAction(tr("&Save CSV..."), this, &ScopeController::saveCsvAs);
     m_menu->addSeparator();
-    m_menu->addAction(tr("View D&ata"), this, &ScopeController::viewData);
+    m_menu->addAction(tr("&View Data"), this, &ScopeController::viewData);
     m_menu->addAction(tr("&Print Plot..."), this, &ScopeController::printPlot);
     m_menu->addAction(tr("&Export Plot (PDF, PNG, SVG)..."), this, &ScopeController::exportPlot);
     m_menu->addSeparator();

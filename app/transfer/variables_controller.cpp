@@ -34,7 +34,7 @@ QString standardText() {
 } // namespace
 
 VariablesController::VariablesController(MainWindow& window)
-    : QObject(&window), m_window(window), m_menu(new QMenu(tr("&Variables"), &window)) {
+    : QObject(&window), m_window(window), m_menu(new QMenu(tr("V&ariables"), &window)) {
     m_menu->setObjectName(QStringLiteral("variablesMenu"));
     m_menu->addAction(tr("&New Variables"), this, &VariablesController::newVariables);
     m_menu->addAction(tr("From &Disk..."), this, &VariablesController::openFromDisk);

@@ -112,11 +112,18 @@ private slots:
         QVERIFY(watch->plot()->graph(0)->dataCount() >= 6);
 
         watch->stop();
-        QTest::qWait(300); // a poll already on the wire is answered
-        QSignalSpy sent(w.window.connection().session(), &serialport::Bds5Session::rawSent);
-        QTest::qWait(1500);
+        // From here on no poll goes out. A BDS5 watcher polls again as soon as an answer comes, on the session's
+        // one queue: five commands queued behind Stop and answered leave no room for a poll that was missed.
+        serialport::Bds5Session* session = w.window.connection().session();
+        QSignalSpy sent(session, &serialport::Bds5Session::rawSent);
+        QSet<quint64> markers;
+        for (int i = 0; i < 5; ++i) markers.insert(session->send(QStringLiteral("P 0"), serialport::Bds5Session::Echo::Quiet));
+        connect(session, &serialport::Bds5Session::finished, &w.window,
+                [&markers](quint64 id, const serialport::Bds5Response&) { markers.remove(id); });
+        QTRY_VERIFY_WITH_TIMEOUT(markers.isEmpty(), kDriveTimeoutMs);
         for (const QList<QVariant>& s : sent)
             QVERIFY2(!s.at(0).toByteArray().startsWith("P PFB"), "a poll went out after Stop");
+        QVERIFY(sent.count() >= 5);
         QVERIFY(!watcher.isRunning());
         w.window.connection().sendCommand(QStringLiteral("J 0"));
     }

@@ -56,7 +56,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.terminal()->text().endsWith(QStringLiteral("42\n-->")) && ready(window),
                                  kDriveTimeoutMs);
         QTest::keyClick(window.terminal(), Qt::Key_X, Qt::ControlModifier); // ^X: not echoed by the drive
-        QTest::qWait(100);
+        QVERIFY(sent.endsWith('\x18')); // an urgent byte is written at once
         dock->stopAction()->trigger();
         QVERIFY(!window.captureLog().isCapturing());
 

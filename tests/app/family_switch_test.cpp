@@ -141,6 +141,23 @@ private slots:
         QVERIFY(!app::parseCommandLine({QStringLiteral("servodesk"), QStringLiteral("--drive"),
                                         QStringLiteral("bds6")}));
     }
+
+    // `servodesk FILE...` (the desktop entry's Exec=servodesk %F): the files are kept to open, and without
+    // --drive the first program's extension chooses the family; --drive still wins.
+    void filesOnTheCommandLineChooseTheFamily() {
+        const QString exe = QStringLiteral("servodesk");
+        auto sc750 = app::parseCommandLine({exe, QStringLiteral("notes.txt"), QStringLiteral("/m/AXIS1.BAS")});
+        QVERIFY(sc750);
+        QCOMPARE(sc750->files, (QStringList{QStringLiteral("notes.txt"), QStringLiteral("/m/AXIS1.BAS")}));
+        QCOMPARE(sc750->connection.family, DriveFamily::Sc750);
+        QCOMPARE(app::parseCommandLine({exe, QStringLiteral("cut.mpl")})->connection.family, DriveFamily::Pmc960);
+        QCOMPARE(app::parseCommandLine({exe, QStringLiteral("A.BDS"), QStringLiteral("B.BAS")})->connection.family,
+                 DriveFamily::Bds5);
+        QCOMPARE(app::parseCommandLine({exe, QStringLiteral("--drive"), QStringLiteral("bds5"), QStringLiteral("B.BAS")})
+                     ->connection.family,
+                 DriveFamily::Bds5);
+        QVERIFY(app::parseCommandLine({exe})->files.isEmpty());
+    }
 };
 
 QTEST_MAIN(FamilySwitchTest)

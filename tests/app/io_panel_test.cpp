@@ -73,7 +73,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(panel.outputLit(1) && panel.outputLit(3), kDriveTimeoutMs);
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
         window.connection().sendRaw("RUN\r"); // the program waits; the alarm watches I1
-        QTest::qWait(300);
+        QTRY_COMPARE_WITH_TIMEOUT(session->mode(), serialport::Bds5Mode::Running, kDriveTimeoutMs); // no prompt
         QVERIFY(panel.outputLit(1));
 
         QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);

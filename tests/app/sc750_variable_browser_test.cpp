@@ -96,13 +96,16 @@ private slots:
         // Out of range: refused with the range, and no P frame goes out (the front-panel display's status
         // requests still do).
         browser->setLive(false);
-        QTest::qWait(200); // a read already on its way comes back
         QSignalSpy sent(ws.session(), &serialport::Sc750Session::rawSent);
         QVERIFY(!browser->writeValue(QStringLiteral("KVI"), QStringLiteral("5000")));
         QVERIFY2(browser->message().contains(QStringLiteral("0 \u2013 1000")), qPrintable(browser->message()));
-        QTest::qWait(300);
-        for (const QList<QVariant>& frame : sent)
-            QVERIFY2(!frame.at(0).toByteArray().contains("KVI"), frame.at(0).toByteArray().constData());
+        // One command at a time on one queue (PROTOCOL.md 3): a read queued after the refused write and
+        // answered leaves no room for a P frame of that write.
+        QString marker;
+        ws.send('G', QStringLiteral("RUN.SPEED"), [&marker](const serialport::Sc750Reply& r) { marker = r.payload; });
+        QTRY_COMPARE_WITH_TIMEOUT(marker, QStringLiteral("RUN.SPEED=1234"), kTimeoutMs);
+        for (const QList<QVariant>& frame : sent) // SOH and the letter: no P frame at all
+            QVERIFY2(!frame.at(0).toByteArray().startsWith("\x01P"), frame.at(0).toByteArray().constData());
         browser->setLive(true);
 
         // Search narrows the tree.

@@ -17,8 +17,10 @@
 #include "editor/program_editor.h"
 
 #include <QAction>
+#include <QClipboard>
 #include <QDialogButtonBox>
 #include <QFile>
+#include <QGuiApplication>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -181,7 +183,10 @@ private slots:
         window.editor()->setFocus();
         window.editor()->selectAll();
         QTest::keyClick(window.editor(), Qt::Key_C, Qt::ControlModifier); // a selection: Copy, not Stop
-        QTest::qWait(300);
+        QVERIFY(QGuiApplication::clipboard()->text().contains(QStringLiteral("GOTO Tick")));
+        // Still running: three more ticks come, and the debugger never left Running.
+        const qsizetype ticks = ws.outputDock()->text().count(QStringLiteral("tick"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().count(QStringLiteral("tick")) >= ticks + 3, kTimeoutMs);
         QCOMPARE(ws.debugger().state(), Sc750Debugger::State::Running);
         window.editor()->setCursorPosition(0, 0);
         QTest::keyClick(window.editor(), Qt::Key_C, Qt::ControlModifier); // L2692

@@ -50,6 +50,33 @@ private slots:
         QVERIFY(ed.saveFile(path).ok);
         QCOMPARE(readAll(path), bytes);
     }
+    // Issue 19, item 7: a binary file was cut at its first NUL byte ("75 of 24,000 bytes") and saving it
+    // would have destroyed the rest. A binary or oversized file is refused whole, and the editor keeps its text.
+    void binaryAndOversizedFilesAreRefusedNotTruncated() {
+        QTemporaryDir dir;
+        const QString binary = dir.filePath(QStringLiteral("RANDOM.BDS"));
+        QByteArray bytes(4000, 'A');
+        bytes[75] = '\0';
+        QVERIFY(writeAll(binary, bytes));
+        ProgramEditor ed;
+        ed.setText(QStringLiteral("B"));
+        auto result = ed.loadFile(binary);
+        QVERIFY(!result.ok);
+        QVERIFY2(result.message.contains(QStringLiteral("RANDOM.BDS")) && result.message.contains(QStringLiteral("75")),
+                 qPrintable(result.message));
+        QCOMPARE(ed.text(), QStringLiteral("B"));
+        QVERIFY(!ed.insertFile(binary).ok); // MERGE FILE refuses it too
+        QCOMPARE(ed.text(), QStringLiteral("B"));
+
+        const QString big = dir.filePath(QStringLiteral("BIG.BDS"));
+        QVERIFY(writeAll(big, QByteArray(3 * 1024 * 1024, 'P')));
+        result = ed.loadFile(big);
+        QVERIFY(!result.ok);
+        QVERIFY2(result.message.contains(QStringLiteral("BIG.BDS")), qPrintable(result.message));
+        QCOMPARE(ed.text(), QStringLiteral("B"));
+        QCOMPARE(readAll(big).size(), 3 * 1024 * 1024); // untouched on disk
+    }
+
     void missingFileIsReportedNotThrown() {
         ProgramEditor ed;
         ed.setText(QStringLiteral("B"));
