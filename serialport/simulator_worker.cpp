@@ -1,8 +1,6 @@
 // Simulated-drive worker: 1 ms drive ticks paced to the wall clock, baud-paced transmit.
 #include "simulator_worker.h"
 
-#include "simulator_fallback_controls.h"
-
 #include "drive_core/drive_factory.h"
 #include "drive_core/pmc960/pmc960_drive.h"
 
@@ -54,11 +52,9 @@ void SimulatorWorker::receive(const QByteArray& bytes) {
     if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
 }
 
+// Every family's drive has its bench (issue 20, item 15: the fallback for one without was never reached).
 drive_core::SimulatorControls* SimulatorWorker::controls() {
-    if (!m_drive) return nullptr;
-    if (auto* own = m_drive->controls()) return own;
-    if (!m_fallbackControls) m_fallbackControls = std::make_unique<SimulatorFallbackControls>(*m_drive);
-    return m_fallbackControls.get();
+    return m_drive ? m_drive->controls() : nullptr;
 }
 
 void SimulatorWorker::control(const std::function<void(drive_core::SimulatorControls&)>& change) {

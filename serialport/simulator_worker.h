@@ -45,7 +45,6 @@ private:
     std::unique_ptr<drive_core::Drive> m_drive;
     drive_core::pmc960::Pmc960Drive* m_overrunDrive = nullptr;         // m_drive, when its overrun model is on
     QByteArray m_held;                                                 // written, held by CTS off
-    std::unique_ptr<drive_core::SimulatorControls> m_fallbackControls; // until the family offers controls()
     qint64 m_lastStatusUs = 0;
     QTimer* m_timer = nullptr;
     QElapsedTimer m_clock;

@@ -12,6 +12,8 @@
 
 #include "editor/program_editor.h"
 
+#include <QAbstractButton>
+#include <QMessageBox>
 #include <QPainter>
 #include <QProgressBar>
 #include <QStatusBar>
@@ -77,6 +79,11 @@ std::vector<ScreenshotTour::Step> transferTourSteps(MainWindow& window) {
                              tabs.refreshTab(editor);
                              window.programController().setStripComments(true);
                              window.programController().download();
+                             // The editor underlines D -1 (kept for the run-time error shot): the user
+                             // downloads anyway to see the drive's own answer.
+                             if (QMessageBox* question = window.programController().downloadQuestion())
+                                 for (QAbstractButton* button : question->buttons())
+                                     if (question->buttonRole(button) == QMessageBox::AcceptRole) button->click();
                          },
                      .ready =
                          [] {

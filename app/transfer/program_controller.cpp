@@ -10,6 +10,7 @@
 #include "transfer_markers.h"
 #include "transfer_reporter.h"
 
+#include "drive_core/bds5/bds5_checker.h"
 #include "editor/program_editor.h"
 #include "serialport/bds5_download.h"
 #include "serialport/bds5_upload.h"
@@ -18,6 +19,8 @@
 #include <QInputDialog>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -95,8 +98,40 @@ void ProgramController::fromDrive() {
 }
 
 void ProgramController::download() {
-    if (!TransferReporter::canStart(m_window)) return;
+    if (!TransferReporter::canStart(m_window) || m_downloadQuestion) return;
     editor::ProgramEditor* editor = m_window.editor();
+    // The editor's own diagnostics (the drive's parser, Bds5Checker): the drive would refuse these lines.
+    std::vector<std::string> lines;
+    for (QString line : editor->text().split(QLatin1Char('\n'))) {
+        if (line.endsWith(QLatin1Char('\r'))) line.chop(1);
+        lines.push_back(line.toStdString());
+    }
+    const auto diagnostics = drive_core::bds5::checkProgram(lines);
+    if (diagnostics.empty()) return startDownload(editor);
+    const auto& first = diagnostics.front();
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Download to Drive"),
+                                tr("The editor finds %n error(s) in this program; the first is on line %1: %2.\n\n"
+                                   "The drive will refuse those lines.",
+                                   nullptr, int(diagnostics.size()))
+                                    .arg(first.line)
+                                    .arg(QString::fromStdString(first.message)),
+                                QMessageBox::Cancel, &m_window);
+    QPushButton* anyway = box->addButton(tr("Download &Anyway"), QMessageBox::AcceptRole);
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    m_downloadQuestion = box;
+    QPointer<editor::ProgramEditor> target(editor);
+    connect(box, &QMessageBox::finished, this, [this, box, anyway, target, line = first.line](int) {
+        if (box->clickedButton() == anyway && target) return startDownload(target);
+        if (target) target->setCursorPosition(line - 1, 0);
+        m_window.statusBar()->showMessage(tr("Download cancelled: the program has errors (line %1 first).").arg(line),
+                                          8000);
+    });
+    box->open();
+}
+
+void ProgramController::startDownload(editor::ProgramEditor* editor) {
+    if (!TransferReporter::canStart(m_window)) return;
     TransferMarkers::clear(*editor);
     auto* transfer = new serialport::Bds5Download(
         *m_window.connection().session(), editor->text(),

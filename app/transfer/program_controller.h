@@ -8,6 +8,7 @@
 #include "serialport/bds5_program_text.h"
 #include "serialport/bds5_transfer.h"
 
+#include <QMessageBox>
 #include <QObject>
 #include <QPointer>
 
@@ -35,7 +36,10 @@ public:
     void newProgram();
     void openFromDisk();
     void fromDrive();
+    // F5: a program the editor finds errors in is downloaded only after the user says so (Download Anyway /
+    // Cancel, non-modal); the question box is downloadQuestion() while it shows.
     void download();
+    QMessageBox* downloadQuestion() const { return m_downloadQuestion; }
     void verify();
     // Program > Drive Password...: asks (non-modal) for the password >BDS sends; kept in AppOptions (on disk
     // only when the user ticked "remember" in Options).
@@ -50,6 +54,7 @@ signals:
     void transferFinished(const serialport::Bds5TransferResult& result); // after the result is shown
 
 private:
+    void startDownload(editor::ProgramEditor* editor);
     void askPasswordThen(std::function<void()> then);
     void watchDriveOutput(const QByteArray& bytes);
     void markDriveError(const serialport::Bds5ErrorLine& error);
@@ -64,6 +69,7 @@ private:
     QAction* m_stripAction;
     QAction* m_verifyAction;
     std::optional<quint32> m_checksum;
+    QPointer<QMessageBox> m_downloadQuestion;
     // What the drive holds, as far as the IDE knows: the last program downloaded or uploaded, its line map
     // and the editor it came from, for errors a running program reports later.
     std::optional<serialport::Bds5ProgramText> m_driveProgram;

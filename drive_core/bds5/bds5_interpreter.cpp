@@ -5,6 +5,7 @@
 #include "bds5_expression.h"
 #include "bds5_printer.h"
 #include "drive_core/catalog/bds5_catalog.h"
+#include "drive_core/physics/motor_parameters.h"
 
 #include <algorithm>
 #include <cctype>
@@ -171,10 +172,12 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     if (word == "TUNE") return tune(entries);
     if (word == "RAND") return random(entries);
     if (word == "TRECORD" || word == "TPLAY") return realTimeTrace(entries, out);
-    if (word == "MOTOR") { // the motor/drive combination (factory use, L6923-6927); text chosen
+    if (word == "MOTOR") { // the present motor drive combination (L6923-6927); the layout is chosen
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
-        out += "MOTOR: SERVODESK REFERENCE MOTOR, 12-BIT R/D, VMAX " + std::to_string(readValue("VMAX").value_or(0)) +
-               " RPM\r\n";
+        const physics::ReferenceMotor* motor = physics::findReferenceMotor(m_state.motorName);
+        out += "MOTOR: " + m_state.motorName;
+        if (motor) out += " (" + std::string(motor->description) + ")";
+        out += ", 12-BIT R/D, VMAX " + std::to_string(readValue("VMAX").value_or(0)) + " RPM\r\n";
         return {};
     }
     for (const char* motionWord :

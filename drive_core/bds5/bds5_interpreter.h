@@ -33,6 +33,7 @@ struct Bds5State {
     Bds5Program program;
     Bds5Motion motion;
     Bds5Servo servo; // the loops and the simulated motor (PFB, VFB, PE, ICMD come from here)
+    std::string motorName = "REF-MEDIUM"; // the reference motor on the bench (physics::referenceMotors)
     Bds5Recorder recorder;
     std::uint32_t randomState = 1; // RAND's generator (v3 L9310)
     // v3 real-time trace (TRECORD/TPLAY, L9317-9319): the last lines executed, oldest first.

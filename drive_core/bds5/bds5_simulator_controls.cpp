@@ -66,6 +66,7 @@ bool Bds5SimulatorControls::selectMotor(std::string_view name) {
     const physics::ReferenceMotor* motor = physics::findReferenceMotor(name);
     if (!motor) return false;
     m_motorName = std::string(motor->name);
+    m_drive.m_state.motorName = m_motorName;
     m_drive.m_state.servo.setMotor(motor->motor);
     m_drive.powerUp();
     m_drive.m_state.variables.set(

@@ -13,6 +13,8 @@
 #include "editor/program_editor.h"
 
 #include <QInputDialog>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QProgressBar>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -54,8 +56,26 @@ struct Window {
         return finished.first().at(0).template value<Result>();
     }
     Result download() { return run(window.programController(), &app::ProgramController::download); }
+    // F5 on a program the editor finds errors in, answered "Download Anyway" as a user who wants the drive's
+    // own answer would.
+    Result downloadAnyway() {
+        QSignalSpy finished(&window.programController(), &app::ProgramController::transferFinished);
+        window.programController().download();
+        QMessageBox* question = window.programController().downloadQuestion();
+        if (!question) return {Status::Failed, QStringLiteral("test: no question about the errors")};
+        for (QAbstractButton* b : question->buttons())
+            if (b->text().contains(QStringLiteral("Anyway"))) b->click();
+        if (!finished.wait(kDriveTimeoutMs)) return {Status::Failed, QStringLiteral("test: no result")};
+        return finished.first().at(0).value<Result>();
+    }
 };
 } // namespace
+
+static QByteArray allSent(const QSignalSpy& spy) {
+    QByteArray bytes;
+    for (const QList<QVariant>& s : spy) bytes += s.at(0).toByteArray();
+    return bytes;
+}
 
 class ProgramTransferTest : public QObject {
     Q_OBJECT
@@ -109,7 +129,7 @@ private slots:
                                                   "D -1\n"
                                                   "B\n"));
         w.window.programController().setStripComments(true);
-        const Result r = w.download();
+        const Result r = w.downloadAnyway(); // the editor already underlines D -1
         w.window.programController().setStripComments(false);
         QVERIFY2(r.ok(), qPrintable(r.summary));
         QVERIFY(w.ready());
@@ -153,6 +173,43 @@ private slots:
         auto* dialog = w.window.findChild<app::TransferDialog*>();
         QVERIFY(dialog && dialog->isVisible()); // the failure stays on screen until closed
         QVERIFY(dialog->resultText().contains(QStringLiteral("drive line 2")));
+    }
+
+    // Issue 19, item 5: F5 on a program the editor finds errors in asks first (Download Anyway / Cancel);
+    // Cancel sends nothing and says why, Download Anyway downloads and the drive's refusal is reported.
+    void downloadOfAProgramWithErrorsAsksFirst() {
+        Window w;
+        QVERIFY(w.ready());
+        w.window.editor()->setText(QStringLiteral("10$\nX1=1\nFROB 2\nB\n"));
+        QSignalSpy sent(&w.window.connection(), &app::DriveConnection::rawSent);
+        QSignalSpy finished(&w.window.programController(), &app::ProgramController::transferFinished);
+        w.window.programController().download();
+        QMessageBox* question = w.window.programController().downloadQuestion();
+        QVERIFY(question && question->isVisible());
+        QVERIFY2(question->text().contains(QStringLiteral("line 3")), qPrintable(question->text()));
+        QVERIFY(!app::TransferDialog::active());
+        question->button(QMessageBox::Cancel)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.window.programController().downloadQuestion(), kDriveTimeoutMs);
+        QVERIFY2(w.window.statusBar()->currentMessage().contains(QStringLiteral("cancelled")),
+                 qPrintable(w.window.statusBar()->currentMessage()));
+        int line = -1, index = -1;
+        w.window.editor()->getCursorPosition(&line, &index);
+        QCOMPARE(line, 2); // the cursor on the first error's line
+        QVERIFY(sent.isEmpty() && finished.isEmpty());
+
+        w.window.programController().download();
+        question = w.window.programController().downloadQuestion();
+        QVERIFY(question);
+        QPushButton* anyway = nullptr;
+        for (QAbstractButton* b : question->buttons())
+            if (b->text().contains(QStringLiteral("Anyway"))) anyway = qobject_cast<QPushButton*>(b);
+        QVERIFY(anyway);
+        anyway->click();
+        QVERIFY(finished.wait(kDriveTimeoutMs));
+        // The drive stores program lines as they come (program-load mode) and says ERR 80 when it runs them.
+        const auto result = finished.first().at(0).value<Result>();
+        QVERIFY2(result.ok(), qPrintable(result.summary));
+        QVERIFY(allSent(sent).contains("FROB 2\r"));
     }
 
     void cancelMidDownloadSaysTheDriveHoldsPartOfTheProgram() {

@@ -80,9 +80,16 @@ TEST(Bds5RealTimeTrace, RecordsExecutedLines) { // v3 L9317-9319
     EXPECT_EQ(t.type("TPLAY NEWEST 1\r"), "TPLAY NEWEST 1\r\n#3 LINE 3 t... B\r\n-->");
 }
 
-TEST(Bds5Motor, ShowsTheCombination) {
+// "Display the present motor drive combination" (L6925): the motor on the bench, which the bench can swap
+// (issue 20, item 13: it printed one fixed motor whatever was fitted).
+TEST(Bds5Motor, ShowsThePresentMotor) {
     TestDrive t;
-    EXPECT_EQ(t.type("MOTOR\r"), "MOTOR\r\nMOTOR: SERVODESK REFERENCE MOTOR, 12-BIT R/D, VMAX 7500 RPM\r\n-->");
+    EXPECT_EQ(t.type("MOTOR\r"), "MOTOR\r\nMOTOR: REF-MEDIUM (1.2 kW, 3 Nm continuous, 6000 RPM (the default)), 12-BIT "
+                                 "R/D, VMAX 7500 RPM\r\n-->");
+    ASSERT_TRUE(t.drive.controls()->selectMotor("REF-LARGE"));
+    t.wait(2000ms);
+    const std::string shown = t.type("MOTOR\r");
+    EXPECT_NE(shown.find("MOTOR: REF-LARGE (3.5 kW, 14 Nm continuous"), std::string::npos) << shown;
 }
 
 TEST(Bds5AutoManual, CycleStartsAutoAndManualRunsWhileOn) { // L4960-4997

@@ -16,7 +16,7 @@ def read_until(port, marker, timeout_s=5.0):
     data = b""
     deadline = time.monotonic() + timeout_s
     while marker not in data and time.monotonic() < deadline:
-        data += port.read(port.in_waiting or 1)
+        data += port.read(1)  # never past the marker: what follows it is the next read_until's
     if marker not in data:
         raise AssertionError(f"did not see {marker!r}; got {data!r}")
     return data
