@@ -14,7 +14,7 @@ cleanup() { for pid in "${hogs[@]}"; do kill "$pid" 2>/dev/null; done; }
 trap cleanup EXIT
 for _ in $(seq "$(nproc)"); do (while :; do :; done) & hogs+=("$!"); done
 
-declare -A failures
+declare -A failures=()
 failed_log=build/Testing/Temporary/LastTestsFailed.log
 bad_runs=0
 for run in $(seq "$runs"); do

@@ -318,29 +318,26 @@ namespace pmc960_test {
 namespace {
 
 // Stop forms that are whole commands (acceptance finding #A2: the next command was read into the G line).
-
-TEST(Pmc960Transcript, GoStarStopsAndPromptsWithoutCr) { // G <display>, * stop system motion: L1169, L1181
+// `start` (with its <cr>) sets the axis moving; `stop` acts and prompts at once, without a <cr>, and what is
+// typed next is a command of its own.
+void expectStopEndsAtOnce(const char* start, const char* stop) {
     TestDrive t;
     t.enable();
-    t.type("G100000+\r");
+    t.type(std::string(start) + "\r");
     t.wait(20ms);
-    ASSERT_TRUE(t.drive.state().motion.moving());
-    EXPECT_EQ(t.type("G*"), prompted("G*")); // acts and prompts at once
-    t.wait(50ms);
-    EXPECT_FALSE(t.drive.state().motion.moving());
-    EXPECT_EQ(t.type("A?"), prompted("A?4000")); // typed after G*, a command of its own
+    ASSERT_TRUE(t.drive.state().motion.moving()) << start;
+    EXPECT_EQ(t.type(stop), prompted(stop));
+    t.wait(100ms);
+    EXPECT_FALSE(t.drive.state().motion.moving()) << stop;
+    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+}
+
+TEST(Pmc960Transcript, GoStarStopsAndPromptsWithoutCr) { // G <display>, * stop system motion: L1169, L1181
+    expectStopEndsAtOnce("G100000+", "G*");
 }
 
 TEST(Pmc960Transcript, HomeStarStopsAndPromptsWithoutCr) { // H* beside H15+<cr> and H,-<cr>: L1214-1216
-    TestDrive t;
-    t.enable();
-    t.type("H4000+\r"); // at the TUH home speed: seconds to go
-    t.wait(20ms);
-    ASSERT_TRUE(t.drive.state().motion.moving());
-    EXPECT_EQ(t.type("H*"), prompted("H*"));
-    t.wait(100ms);
-    EXPECT_FALSE(t.drive.state().motion.moving());
-    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+    expectStopEndsAtOnce("H4000+", "H*"); // at the TUH home speed: seconds to go
 }
 
 TEST(Pmc960Transcript, EncoderHomeEndsAtItsDirection) { // H [<sync>] <direction>, no <cr>: L733, L1222, L1246
@@ -357,15 +354,7 @@ TEST(Pmc960Transcript, EncoderHomeEndsAtItsDirection) { // H [<sync>] <direction
 }
 
 TEST(Pmc960Transcript, CamStarStopsAndPromptsWithoutCr) { // c* among the stop commands (L1684), like C^ (L1101)
-    TestDrive t;
-    t.enable();
-    EXPECT_EQ(t.type("C1000:100\r"), prompted("C1000:100"));
-    t.wait(20ms);
-    ASSERT_TRUE(t.drive.state().motion.moving());
-    EXPECT_EQ(t.type("C*"), prompted("C*"));
-    t.wait(100ms);
-    EXPECT_FALSE(t.drive.state().motion.moving());
-    EXPECT_EQ(t.type("A?"), prompted("A?4000"));
+    expectStopEndsAtOnce("C1000:100", "C*");
 }
 
 TEST(Pmc960Transcript, IndexAndJogStarStayInTheirLine) { // #<direction># then <cr>: L1255, L1266, J,-*+*- L1296
