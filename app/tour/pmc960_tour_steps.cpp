@@ -160,11 +160,28 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          Pmc960StatusDock* status = pmc960(window)->statusDock();
                          for (const char* command : {"SM0", "I4000+", "SM2", "V400", "I400000+"})
                              status->sendCommand(QString::fromLatin1(command));
-                         QTimer::singleShot(1500, errors, [&window] { estop(window, true); });
-                         QTimer::singleShot(2500, errors, [&window, errors] {
-                             estop(window, false);
-                             errors->readHistory();
+                         // Each step on an event, not after a fixed time (a busy machine ran ESTOP' before the
+                         // move had started): ESTOP' once the status shows the axis moving, released and the
+                         // last error read once the #E0 is in the log.
+                         auto* sequence = new QTimer(errors);
+                         sequence->setInterval(50);
+                         QObject::connect(sequence, &QTimer::timeout, errors, [&window, errors, status, sequence] {
+                             const ErrorLogModel& m = errors->model();
+                             bool e0 = false;
+                             for (int row = 0; row < m.rowCount(); ++row)
+                                 e0 = e0 || (m.entry(row).code == 0xE0 &&
+                                             m.entry(row).origin != ErrorLogModel::Origin::History);
+                             if (e0) {
+                                 sequence->deleteLater();
+                                 estop(window, false);
+                                 errors->readHistory();
+                             } else if (!sequence->property("estop").toBool() &&
+                                        status->value(QStringLiteral("velocity")).toInt() != 0) {
+                                 sequence->setProperty("estop", true);
+                                 estop(window, true);
+                             }
                          });
+                         sequence->start();
                      },
                      .ready = [&window] {
                          const ErrorLogModel& m = window.errorLogDock()->model();
