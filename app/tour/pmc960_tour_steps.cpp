@@ -161,22 +161,28 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          for (const char* command : {"SM0", "I4000+", "SM2", "V400", "I400000+"})
                              status->sendCommand(QString::fromLatin1(command));
                          // Each step on an event, not after a fixed time (a busy machine ran ESTOP' before the
-                         // move had started): ESTOP' once the status shows the axis moving, released and the
-                         // last error read once the #E0 is in the log.
+                         // move had started): ESTOP' once the status shows this step's move under way (after
+                         // the #B6 of the refused index, forward and past where it started: a status from the
+                         // earlier steps' moves must not count), released and the last error read once the
+                         // #E0 is in the log.
+                         const int start = status->value(QStringLiteral("position")).toInt();
                          auto* sequence = new QTimer(errors);
                          sequence->setInterval(50);
-                         QObject::connect(sequence, &QTimer::timeout, errors, [&window, errors, status, sequence] {
+                         QObject::connect(sequence, &QTimer::timeout, errors, [&window, errors, status, sequence, start] {
                              const ErrorLogModel& m = errors->model();
-                             bool e0 = false;
-                             for (int row = 0; row < m.rowCount(); ++row)
-                                 e0 = e0 || (m.entry(row).code == 0xE0 &&
-                                             m.entry(row).origin != ErrorLogModel::Origin::History);
+                             bool e0 = false, b6 = false;
+                             for (int row = 0; row < m.rowCount(); ++row) {
+                                 const bool reported = m.entry(row).origin != ErrorLogModel::Origin::History;
+                                 e0 = e0 || (m.entry(row).code == 0xE0 && reported);
+                                 b6 = b6 || (m.entry(row).code == 0xB6 && reported);
+                             }
                              if (e0) {
                                  sequence->deleteLater();
                                  estop(window, false);
                                  errors->readHistory();
-                             } else if (!sequence->property("estop").toBool() &&
-                                        status->value(QStringLiteral("velocity")).toInt() != 0) {
+                             } else if (!sequence->property("estop").toBool() && b6 &&
+                                        status->value(QStringLiteral("velocity")).toInt() > 0 &&
+                                        status->value(QStringLiteral("position")).toInt() > start + 1000) {
                                  sequence->setProperty("estop", true);
                                  estop(window, true);
                              }

@@ -58,6 +58,8 @@ public:
     bool promptPending() const { return m_promptPending; }
     // The UART still has bytes to send (they leave at the BAUD rate, 8N1: ten bits a character).
     bool transmitting() const { return m_uart.busy(); }
+    // Characters written and not yet on the line.
+    std::size_t transmitBacklog() const { return m_uart.backlog(); }
     int baudRate() const { return m_uart.baud(); }
     const Bds5State& state() const { return m_state; }
     // The bench: inputs, load, motor, master input, power (SimulatorControls).

@@ -253,7 +253,10 @@ private slots:
             w.window.connection().sendCommand(QString::fromLatin1(line));
         app::TestMove move;
         move.amplitude = 200;
-        move.durationMs = 50;
+        // The J commands go out on the host's clock, the drive records on its own: a step of 150 ms (the loop
+        // settles in ~40) leaves room for a busy host's late J 0 (a 50 ms step was cut short under load,
+        // its rise read 12.5 ms instead of ~19).
+        move.durationMs = 150;
         panel->setTestMove(move);
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.runOnce();
