@@ -204,6 +204,18 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          window.errorLogDock()->hide();
                          if (*demo) (*demo)->setModified(false);
                          window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
+                     },
+                     .state = [&window] {
+                         const ErrorLogModel& m = window.errorLogDock()->model();
+                         QStringList logged;
+                         for (int row = 0; row < m.rowCount(); ++row)
+                             logged << QStringLiteral("%1%2").arg(m.entry(row).code, 2, 16, QLatin1Char('0')).arg(
+                                           m.entry(row).origin == ErrorLogModel::Origin::History ? QStringLiteral(" (&)")
+                                                                                                 : QString());
+                         Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         return QStringLiteral("log: %1; status position %2, velocity %3")
+                             .arg(logged.join(QStringLiteral(", ")), status->value(QStringLiteral("position")),
+                                  status->value(QStringLiteral("velocity")));
                      }});
     return steps;
 }

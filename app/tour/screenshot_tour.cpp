@@ -114,7 +114,10 @@ void ScreenshotTour::poll() {
     if (step.ready && !step.ready()) {
         m_settleTicks = 0;
         if (m_elapsedMs >= kStepTimeoutMs)
-            fail(tr("step \"%1\" was not ready after %2 s").arg(step.name).arg(kStepTimeoutMs / 1000));
+            fail(tr("step \"%1\" was not ready after %2 s%3")
+                     .arg(step.name)
+                     .arg(kStepTimeoutMs / 1000)
+                     .arg(step.state ? QStringLiteral(" (%1)").arg(step.state()) : QString()));
         return;
     }
     if (++m_settleTicks < kSettleTicks) return;

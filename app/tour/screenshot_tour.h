@@ -33,6 +33,7 @@ public:
         std::function<QPixmap()> grab; // optional: the picture to save; no picture when empty
         std::function<QString()> text; // optional: what the view says, saved as "<name>.txt" for tests
         std::function<void()> cleanUp; // optional: after the grab (close the dialog)
+        std::function<QString()> state; // optional: what the step waits on, said when it times out
     };
 
     ScreenshotTour(MainWindow& window, const QString& outputDir, QObject* parent = nullptr);

@@ -43,7 +43,7 @@ private:
             {QStringLiteral("--drive"), family, QStringLiteral("--pty"), QStringLiteral("--link"), m_linkPath});
         sim.start();
         QVERIFY(sim.waitForStarted(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 30000);
         const QString first = QString::fromLatin1(sim.readLine()).trimmed();
         QVERIFY2(first.startsWith(QStringLiteral("PTY /dev/")), qPrintable(first));
     }
@@ -84,7 +84,7 @@ private slots:
         const auto result = finished.first().at(0).value<Bds5TransferResult>();
         QCOMPARE(result.status, Status::Failed);
         QVERIFY2(!result.summary.isEmpty(), "a failed download says why");
-        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 30000);
         QVERIFY(!connection.isConnected());
         bool saidLost = false;
         for (const auto& e : errors) saidLost |= e.at(0).toString().contains(QLatin1String("lost"));
@@ -93,9 +93,9 @@ private slots:
         // The simulator is back under the same name: the connection reopens by itself.
         QProcess again;
         startSimulator(again);
-        QTRY_VERIFY_WITH_TIMEOUT(connection.isConnected(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(connection.isConnected(), 30000);
         QVERIFY(!connection.isReconnecting());
-        QTRY_VERIFY_WITH_TIMEOUT(connection.session()->state() == Bds5Session::State::Ready, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(connection.session()->state() == Bds5Session::State::Ready, 30000);
 
         Bds5Download retry(*connection.session(), QStringLiteral("10$\nP \"BACK\"\nB\n"), {});
         QSignalSpy retried(&retry, &Bds5Transfer::finished);
@@ -137,7 +137,7 @@ private slots:
         QCOMPARE(result.status, Status::Failed);
         QVERIFY2(!result.summary.isEmpty(), "a failed capture says why");
         QVERIFY(result.lines.isEmpty());
-        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 30000);
     }
 
     // Mid-poll, in the window: quiet P polls run (as the variable views do) when the simulator dies. The
@@ -180,8 +180,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(answered >= 5, 10000);
         sim.kill();
         QVERIFY(sim.waitForFinished(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(failed >= 1, 5000); // the poll in flight failed, and said why
+        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(failed >= 1, 30000); // the poll in flight failed, and said why
         QVERIFY2(!failure.isEmpty(), "a failed poll says why");
         QVERIFY2(window.statusBar()->currentMessage().contains(QLatin1String("lost")),
                  qPrintable(window.statusBar()->currentMessage()));
@@ -217,7 +217,7 @@ private slots:
 
         sim.kill();
         QVERIFY(sim.waitForFinished(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(ws.isReconnecting(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isReconnecting(), 30000);
         QVERIFY(!ws.isConnected());
         QVERIFY2(ws.statusText().contains(QLatin1String("connection lost")), qPrintable(ws.statusText()));
         bool saidLost = false;
@@ -231,7 +231,7 @@ private slots:
         QVERIFY(!ws.isReconnecting());
         QSignalSpy finished(ws.session(), &serialport::Pmc960Session::finished);
         ws.session()->send("A?");
-        QVERIFY(finished.wait(5000));
+        QVERIFY(finished.wait(30000));
         QVERIFY(!finished.first().at(1).value<serialport::Pmc960Response>().value.isEmpty());
         QCOMPARE(window.editor()->text(), text);
         again.terminate();
@@ -243,10 +243,10 @@ private slots:
         startSimulator(sim);
         app::DriveConnection connection;
         connection.connectTo(app::ConnectionChoice::serialPort(m_linkPath, 9600));
-        QTRY_VERIFY_WITH_TIMEOUT(connection.isConnected(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(connection.isConnected(), 30000);
         sim.kill();
         QVERIFY(sim.waitForFinished(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(connection.isReconnecting(), 30000);
         connection.disconnectDrive();
         QVERIFY(!connection.isReconnecting());
     }

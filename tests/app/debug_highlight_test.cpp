@@ -21,7 +21,7 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 15000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 
 // spec/examples/bds5/29-nested-if-55.bds (L4074-4088), as the user has it in the editor.
 const QStringList kProgram{QStringLiteral("55$"),

@@ -21,7 +21,7 @@ using app::MainWindow;
 using serialport::Bds5Session;
 
 namespace {
-constexpr int kDriveTimeoutMs = 15000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 
 QStringList terminalLines(const MainWindow& window) {
     return window.terminal()->text().split(QLatin1Char('\n'));

@@ -22,7 +22,7 @@ using app::ErrorLogModel;
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 15000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();

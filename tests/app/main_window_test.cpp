@@ -16,7 +16,7 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 10000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 const QString kPrompt = QStringLiteral("-->");
 
 QString labelText(const MainWindow& window, const char* name) {

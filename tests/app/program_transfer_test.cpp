@@ -27,7 +27,7 @@ using Result = serialport::Bds5TransferResult;
 using Status = Result::Status;
 
 namespace {
-constexpr int kDriveTimeoutMs = 15000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 const QString kHelloWorld = QStringLiteral("10$\nP \"HELLO WORLD\"\nB\n"); // the manual's first session
 
 bool driveReady(const MainWindow& window) {

@@ -32,7 +32,7 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 15000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 // Not touched by the round trip: they would cut the line to the drive or its prompts.
 const QStringList kRisky{"BAUD", "ADDR", "WATCH", "PROMPT", "ECHO", "MULTI", "FAULT"};
 

@@ -27,7 +27,7 @@ using app::VariableModel;
 using app::VariableValidator;
 
 namespace {
-constexpr int kDriveTimeoutMs = 15000;
+constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
 
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();

@@ -22,7 +22,7 @@ struct Fixture {
     Bds5Session session{link};
     Fixture() : link(drive_core::DriveFamily::Bds5, SimulatorLink::Options{1.0, 9600, false}) {
         link.open();
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 30000);
     }
     Bds5Response run(const QString& line) {
         QSignalSpy finished(&session, &Bds5Session::finished);
@@ -129,9 +129,9 @@ private slots:
         QSignalSpy finished(&record, &Bds5Transfer::finished);
         QSignalSpy progress(&record, &Bds5Transfer::progress);
         record.start();
-        QTRY_VERIFY_WITH_TIMEOUT(progress.count() > 3, 5000); // recording, J 500 sent
+        QTRY_VERIFY_WITH_TIMEOUT(progress.count() > 3, 30000); // recording, J 500 sent
         record.cancel();
-        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 30000);
         const auto r = finished.first().at(0).value<Bds5TransferResult>();
         QCOMPARE(r.status, Status::Cancelled);
         QVERIFY2(r.summary.contains(QStringLiteral("\"J 0\" was sent")), qPrintable(r.summary));

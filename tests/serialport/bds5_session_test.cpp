@@ -24,7 +24,7 @@ private:
     static Bds5Response run(Bds5Session& session, const QString& line) {
         QSignalSpy finished(&session, &Bds5Session::finished);
         const quint64 id = session.send(line);
-        if (!finished.wait(5000)) {
+        if (!finished.wait(30000)) {
             qWarning("no answer to %s", qPrintable(line));
             return {};
         }
@@ -36,7 +36,7 @@ private:
 private slots:
     void becomesReadyAtTheSignOnPrompt() {
         Fixture f;
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 30000);
         QCOMPARE(f.session.mode(), Bds5Mode::Interactive);
         QCOMPARE(f.session.lastPrompt(), QStringLiteral("-->"));
         QVERIFY(f.raw.contains("BDS5"));
@@ -56,7 +56,7 @@ private slots:
         f.session.send(QStringLiteral("X1=1000"));
         f.session.send(QStringLiteral("X2=X1*3"));
         f.session.send(QStringLiteral("P X1 X2"));
-        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 30000);
         const auto last = finished.at(2).at(1).value<Bds5Response>();
         QCOMPARE(last.lines, QStringList{QStringLiteral("        1000        3000")});
         // The wire shows each command sent only after the previous prompt.
@@ -75,10 +75,10 @@ private slots:
 
     void terminalBytesPassThroughAndTheDriveEchoes() {
         Fixture f;
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 30000);
         f.raw.clear();
         f.session.sendRaw("P 6*7\r");
-        QTRY_VERIFY_WITH_TIMEOUT(f.raw.endsWith("-->"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.raw.endsWith("-->"), 30000);
         QCOMPARE(f.raw, QByteArray("P 6*7\r\n          42\r\n-->"));
     }
 
@@ -86,12 +86,12 @@ private slots:
         Fixture f;
         QSignalSpy finished(&f.session, &Bds5Session::finished);
         for (const char* line : {">BDS", "1$", "D 100000", "\x1b"}) f.session.sendRaw(QByteArray(line) + (line[0] == '\x1b' ? "" : "\r"));
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 30000);
         f.session.sendRaw("RUN 1\r");
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Running, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Running, 30000);
         f.raw.clear();
         f.session.sendRaw("\x1b"); // Esc: monitor mode
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Monitor, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Monitor, 30000);
         QVERIFY(f.raw.contains("ENTER MONITOR MODE. PUSH ESCAPE TO EXIT"));
     }
 
@@ -100,7 +100,7 @@ private slots:
     // sleeping drive), and the wake-up's prompt lets it go.
     void aMultidropAddressSleepsUntilTheWakeUp() {
         Fixture f;
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 30000);
         QSignalSpy sent(&f.session, &Bds5Session::rawSent);
         const Bds5Response r = run(f.session, QStringLiteral("ADDR 66"));
         QVERIFY(r.errors.isEmpty());
@@ -109,7 +109,7 @@ private slots:
         QSignalSpy finished(&f.session, &Bds5Session::finished);
         f.session.send(QStringLiteral("P 6*7"));
         f.session.sendRaw("\\B");
-        QVERIFY2(finished.wait(5000), f.raw.right(60).toPercentEncoding().constData());
+        QVERIFY2(finished.wait(30000), f.raw.right(60).toPercentEncoding().constData());
         QCOMPARE(finished.first().at(1).value<Bds5Response>().lines, QStringList{QStringLiteral("          42")});
         QCOMPARE(f.session.lastPrompt(), QStringLiteral("B->"));
         QByteArray wire;
@@ -119,7 +119,7 @@ private slots:
 
     void closingTheLinkFailsTheCommandInFlight() {
         Fixture f;
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 30000);
         QSignalSpy failed(&f.session, &Bds5Session::failed);
         f.session.send(QStringLiteral("P 1"));
         f.session.send(QStringLiteral("P 2"));

@@ -26,7 +26,7 @@ struct Fixture {
     explicit Fixture(bool paced = false)
         : link(drive_core::DriveFamily::Bds5, SimulatorLink::Options{1.0, 9600, paced}) {
         link.open();
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 30000);
     }
     Bds5Response run(const QString& line) {
         QSignalSpy finished(&session, &Bds5Session::finished);
@@ -38,7 +38,7 @@ struct Fixture {
     Bds5Response escape() {
         QSignalSpy finished(&session, &Bds5Session::finished);
         session.sendEscape();
-        finished.wait(5000);
+        finished.wait(30000);
         return finished.isEmpty() ? Bds5Response{} : finished.last().at(1).value<Bds5Response>();
     }
 };
@@ -91,13 +91,13 @@ private slots:
         QCOMPARE(download(f, kHelloWorld).status, Status::Ok);
         // Someone at the terminal reloads the program with one line changed: raw bytes, as typed.
         f.session.sendRaw(">BDS\r");
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::ProgramLoad, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::ProgramLoad, 30000);
         f.session.sendRaw("10$\r");
         f.session.sendRaw("P \"HELLO MARS\"\r");
         f.session.sendRaw("B\r");
         f.session.sendRaw("\x1b");
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Interactive, 5000);
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Interactive, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Bds5Session::State::Ready, 30000);
         Bds5Verify verify(f.session, Bds5ProgramText::prepare(kHelloWorld, false));
         const Bds5TransferResult r = runTransfer(verify);
         QCOMPARE(r.status, Status::Mismatch);
@@ -262,7 +262,7 @@ private slots:
         Fixture f;
         QCOMPARE(download(f, QStringLiteral("1$\nD 100\nGOTO 1\n")).status, Status::Ok);
         f.session.sendRaw("RUN 1\r");
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Running, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.mode(), Bds5Mode::Running, 30000);
         const Bds5TransferResult r = download(f, kHelloWorld);
         QCOMPARE(r.status, Status::Refused);
         QVERIFY2(r.summary.contains(QStringLiteral("Running")), qPrintable(r.summary));

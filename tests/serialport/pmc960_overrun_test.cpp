@@ -35,22 +35,22 @@ private slots:
         QByteArray got;
         connect(&link, &Link::bytesReceived, this, [&got](const QByteArray& bytes) { got += bytes; });
         link.open();
-        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith("=}"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith("=}"), 30000);
         got.clear();
         link.write("SM2\r");
-        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith("=}"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith("=}"), 30000);
         got.clear();
         link.write("\x1dh"); // reads and resets the controller's checksum
-        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith('\r'), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith('\r'), 30000);
         got.clear();
         // ';' lands while the controller is busy after the '+' trigger; the CR lands on it: ';' is lost,
         // so no } handshake comes, and the controller never counted it.
         link.write("J100+;\r");
-        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith("=}"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith("=}"), 30000);
         QCOMPARE(got, QByteArray("J100+\r\n=}"));
         got.clear();
         link.write("\x1dh");
-        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith('\r'), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(got.endsWith('\r'), 30000);
         QCOMPARE(got.trimmed().toInt(), byteSum("J100+\r"));
     }
 
@@ -68,7 +68,7 @@ private slots:
         };
         QCOMPARE(run("SM2\r").error, 0);
         session.poll('h');
-        QVERIFY(polled.wait(5000));
+        QVERIFY(polled.wait(30000));
         session.resetChecksum();
         const Pmc960Response jog = run("J100+;\r");
         QCOMPARE(jog.error, 0);
@@ -76,7 +76,7 @@ private slots:
         QCOMPARE(run("J?").value, QStringLiteral("100"));
         QCOMPARE(run("J*\r").error, 0);
         session.poll('h');
-        QVERIFY(polled.wait(5000));
+        QVERIFY(polled.wait(30000));
         QCOMPARE(polled.last().at(2).toString().toInt(), int(session.sentChecksum()));
         QVERIFY(session.sentChecksum() != 0);
     }

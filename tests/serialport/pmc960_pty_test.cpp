@@ -32,7 +32,7 @@ private slots:
         m_sim.setArguments({QStringLiteral("--drive"), QStringLiteral("pmc960"), QStringLiteral("--pty")});
         m_sim.start();
         QVERIFY(m_sim.waitForStarted(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 30000);
         const QString first = QString::fromLatin1(m_sim.readLine()).trimmed();
         QVERIFY2(first.startsWith(QStringLiteral("PTY /dev/")), qPrintable(first));
         m_path = first.mid(4);
@@ -54,9 +54,9 @@ private slots:
 
         QSignalSpy finished(&session, &Pmc960Session::finished);
         session.send("A3500\r");
-        QVERIFY(finished.wait(5000));
+        QVERIFY(finished.wait(30000));
         session.send("A?");
-        QVERIFY(finished.wait(5000));
+        QVERIFY(finished.wait(30000));
         const auto response = finished.last().at(1).value<Pmc960Response>();
         QCOMPARE(response.error, 0);
         QCOMPARE(response.value.trimmed(), QStringLiteral("3500"));

@@ -10,9 +10,9 @@ import serial  # Debian's python3-serial
 PROMPT = b"\r\n=}"
 
 
-# A real pty peer needs real time: the bound is generous (20 s for a few characters) because the simulator
-# may get a sliver of a loaded machine; a pass takes milliseconds.
-def read_until(port, marker, timeout_s=20.0):
+# A real pty peer needs real time: the bound is generous (30 s for a few characters) because the simulator
+# may get a sliver of a loaded machine (one was seen to stall every process for 8 s); a pass takes ms.
+def read_until(port, marker, timeout_s=30.0):
     data = b""
     deadline = time.monotonic() + timeout_s
     while marker not in data and time.monotonic() < deadline:

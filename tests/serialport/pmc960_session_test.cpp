@@ -48,7 +48,7 @@ private:
     static Pmc960Response run(Pmc960Session& session, const QByteArray& command) {
         QSignalSpy finished(&session, &Pmc960Session::finished);
         const quint64 id = session.send(command);
-        if (!finished.wait(5000)) {
+        if (!finished.wait(30000)) {
             qWarning("no answer to %s", command.constData());
             return {};
         }
@@ -60,7 +60,7 @@ private:
 private slots:
     void becomesReadyAtThePrompt() {
         Fixture f;
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 30000);
         QCOMPARE(f.session.axisId(), '=');
     }
 
@@ -82,7 +82,7 @@ private slots:
 
     void typedBytesHoldTheLineUntilThePromptAndShowInTheTerminal() {
         Fixture f;
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 30000);
         QByteArray shown;
         connect(&f.session, &Pmc960Session::shownReceived, this, [&shown](const QByteArray& b) { shown += b; });
         f.session.setStatusPolling(20, "f");
@@ -95,12 +95,12 @@ private slots:
         QCOMPARE(finished.count(), 0);
         QCOMPARE(polled.count(), 0);
         f.session.sendTyped("34\r");
-        QVERIFY(finished.wait(5000));
+        QVERIFY(finished.wait(30000));
         QCOMPARE(finished.first().at(0).value<quint64>(), id);
         QCOMPARE(run(f.session, "A?").value, QStringLiteral("1234")); // the typed command reached the controller
         QVERIFY2(shown.contains("A1234\r\n"), shown.constData());          // its echo is the terminal's
         QVERIFY2(!shown.contains("V?"), shown.constData());                 // the session's own answers are not
-        QTRY_VERIFY_WITH_TIMEOUT(polled.count() > 0, 2000);                 // polls resume after the prompt
+        QTRY_VERIFY_WITH_TIMEOUT(polled.count() > 0, 30000);                 // polls resume after the prompt
     }
 
     void pollsGoBetweenCommands() {
@@ -111,7 +111,7 @@ private slots:
         f.session.send("G1000+\r");
         const quint64 id = f.session.poll('g');
         f.session.send("G!");
-        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 30000);
         QCOMPARE(polled.count(), 1);
         QCOMPARE(polled.at(0).at(0).value<quint64>(), id);
     }
@@ -122,7 +122,7 @@ private slots:
         SimulatorLink link{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, 9600, true}};
         Pmc960Session session{link};
         link.open();
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
         QByteArray shown;
         connect(&session, &Pmc960Session::shownReceived, this, [&shown](const QByteArray& b) { shown += b; });
         QSignalSpy polled(&session, &Pmc960Session::statusPolled);
@@ -132,7 +132,7 @@ private slots:
             session.sendTyped("A?");
         }
         QTRY_COMPARE_WITH_TIMEOUT(shown.count("A?2500\r\n"), 5, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(polled.count() > 0, 5000); // polls resume once the user's commands are done
+        QTRY_VERIFY_WITH_TIMEOUT(polled.count() > 0, 30000); // polls resume once the user's commands are done
         for (const QList<QVariant>& answer : polled) QCOMPARE(answer.at(1).toString(), QStringLiteral("0"));
     }
 
@@ -164,9 +164,9 @@ private slots:
     void statusTimerPollsWhileIdle() {
         Fixture f;
         QSignalSpy status(&f.session, &Pmc960Session::statusPolled);
-        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(f.session.state(), Pmc960Session::State::Ready, 30000);
         f.session.setStatusPolling(20, "gfvm");
-        QTRY_VERIFY_WITH_TIMEOUT(status.count() >= 4, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(status.count() >= 4, 30000);
         QCOMPARE(run(f.session, "V?").value, QStringLiteral("400")); // commands still pass
         f.session.setStatusPolling(0, {});
         QCOMPARE(status.at(0).at(1).toString(), QStringLiteral("0"));
@@ -197,7 +197,7 @@ private slots:
         Pmc960Upload upload(f.session);
         QSignalSpy done(&upload, &Pmc960Upload::done);
         upload.start();
-        QVERIFY(done.wait(5000));
+        QVERIFY(done.wait(30000));
         QVERIFY(done.at(0).at(0).toBool());
         QCOMPARE(done.at(0).at(1).toStringList(), (QStringList{"@T", "I+,", "LT9", "E"}));
     }
@@ -228,7 +228,7 @@ private slots:
             FaultLink link(inner, 1, {}, {});
             Pmc960Session session(link);
             link.open();
-            QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 5000);
+            QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
             link.setFaults({.drop = 1.0}, {}); // nothing reaches the controller any more
             QSignalSpy failed(&session, &Pmc960Session::failed);
             const quint64 id = session.send("A?");
@@ -264,7 +264,7 @@ private slots:
         link.deliver("#E0\r\n=}");
         link.deliver("\r\n=}");
         link.deliver("\r\n=}");
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
         QCOMPARE(errors.count(), 1);
         QCOMPARE(errors.at(0).at(0).toInt(), 0xE0);
     }
@@ -277,7 +277,7 @@ private slots:
         Pmc960Session session(link);
         link.open();
         link.deliver("\r\n=}");
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
         QSignalSpy finished(&session, &Pmc960Session::finished);
         QSignalSpy errors(&session, &Pmc960Session::asyncError);
         session.send("OB!");
@@ -304,7 +304,7 @@ private slots:
         Pmc960Session session(link);
         link.open();
         link.deliver("\r\n=}");
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 2000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
         QSignalSpy finished(&session, &Pmc960Session::finished);
         session.send("A?");
         link.deliver("A?#00\r\n=}");

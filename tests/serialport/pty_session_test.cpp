@@ -18,7 +18,7 @@ private slots:
         m_sim.setArguments({QStringLiteral("--drive"), QStringLiteral("bds5"), QStringLiteral("--pty")});
         m_sim.start();
         QVERIFY(m_sim.waitForStarted(5000));
-        QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_sim.canReadLine(), 30000);
         const QString first = QString::fromLatin1(m_sim.readLine()).trimmed();
         QVERIFY2(first.startsWith(QStringLiteral("PTY /dev/")), qPrintable(first));
         m_path = first.mid(4);
@@ -37,12 +37,12 @@ private slots:
         connect(&session, &Bds5Session::rawReceived, this, [&raw](const QByteArray& b) { raw += b; });
         link.open();
         QVERIFY(link.isOpen());
-        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 30000);
         QCOMPARE(session.mode(), Bds5Mode::Interactive);
 
         QSignalSpy finished(&session, &Bds5Session::finished);
         session.send(QStringLiteral("P \"HELLO, WORLD\""));
-        QVERIFY(finished.wait(5000));
+        QVERIFY(finished.wait(30000));
         const auto response = finished.first().at(1).value<Bds5Response>();
         QCOMPARE(response.lines, QStringList{QStringLiteral("HELLO, WORLD")});
         QVERIFY(raw.contains("P \"HELLO, WORLD\"\r\nHELLO, WORLD\r\n-->"));
@@ -55,7 +55,7 @@ private slots:
             link.open();
             QSignalSpy finished(&session, &Bds5Session::finished);
             session.send(QStringLiteral("X7=4242"));
-            QVERIFY(finished.wait(5000));
+            QVERIFY(finished.wait(30000));
             link.close();
         }
         SerialPortLink link(m_path, 9600);
@@ -63,7 +63,7 @@ private slots:
         link.open();
         QSignalSpy finished(&session, &Bds5Session::finished);
         session.send(QStringLiteral("P X7"));
-        QVERIFY(finished.wait(5000));
+        QVERIFY(finished.wait(30000));
         QCOMPARE(finished.first().at(1).value<Bds5Response>().lines, QStringList{QStringLiteral("        4242")});
     }
 

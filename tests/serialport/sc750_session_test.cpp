@@ -49,7 +49,7 @@ private:
 private slots:
     void identifiesTheController() {
         Fixture f;
-        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 30000);
         const Sc750Reply r = ask(f.session, 'V');
         QCOMPARE(r.letter, 'V');
         QCOMPARE(r.payload, QStringLiteral("752,2.8,1,255"));
@@ -57,7 +57,7 @@ private slots:
 
     void downloadRunBreakpointVariable() {
         Fixture f;
-        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 30000);
         const auto bin = partNumberBin();
         QVERIFY(!bin.empty());
         Sc750Download download(f.session, bin);
@@ -73,7 +73,7 @@ private slots:
         QCOMPARE(ask(f.session, 'B', QStringLiteral("+76")).payload, QStringLiteral("76"));
         QSignalSpy hit(&f.session, &Sc750Session::breakpointHit);
         QCOMPARE(ask(f.session, 'R').letter, 'R');
-        QTRY_COMPARE_WITH_TIMEOUT(hit.count(), 1, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(hit.count(), 1, 30000);
         QCOMPARE(hit.first().at(0).toInt(), 76);
         QVERIFY(f.output.contains("ENTER PART NUMBER:"));
         QCOMPARE(ask(f.session, 'G', QStringLiteral("PITCH")).payload, QStringLiteral("PITCH=.5"));
@@ -82,16 +82,16 @@ private slots:
         QCOMPARE(ask(f.session, '?').payload.left(5), QStringLiteral("B,76,"));
 
         QCOMPARE(ask(f.session, 'C').letter, 'C');
-        QTRY_VERIFY_WITH_TIMEOUT(f.output.contains("PART NUMBER? "), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.output.contains("PART NUMBER? "), 30000);
         QSignalSpy stopped(&f.session, &Sc750Session::programStopped);
         f.session.sendStop();
-        QTRY_COMPARE_WITH_TIMEOUT(stopped.count(), 1, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(stopped.count(), 1, 30000);
         QCOMPARE(ask(f.session, '?').payload.left(1), QStringLiteral("S"));
     }
 
     void programEventsArriveAsSignals() {
         Fixture f;
-        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 30000);
         const auto program = drive_core::sc750::compile("DIM a(2) AS INTEGER\nPRINT \"go\"\na(3) = 1\n");
         QVERIFY(program.ok());
         Sc750Download download(f.session, program.bin);
@@ -100,7 +100,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, 10000);
         QSignalSpy error(&f.session, &Sc750Session::runTimeError);
         QCOMPARE(ask(f.session, 'R').letter, 'R');
-        QTRY_COMPARE_WITH_TIMEOUT(error.count(), 1, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(error.count(), 1, 30000);
         QCOMPARE(error.first().at(0).toInt(), 244); // F 4
         QCOMPARE(error.first().at(1).toInt(), 3);
         QVERIFY(error.first().at(2).toString().contains(QLatin1String("SUBSCRIPT OUT OF RANGE")));
@@ -115,13 +115,13 @@ private slots:
         QVERIFY(secondDone.first().at(0).toBool());
         QSignalSpy ended(&f.session, &Sc750Session::programEnded);
         QCOMPARE(ask(f.session, 'R').letter, 'R');
-        QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 30000);
         QCOMPARE(ended.first().at(0).toInt(), 2);
     }
 
     void aDrivesErrorReplyArrivesAsFailed() {
         Fixture f;
-        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 30000);
         const Sc750Reply r = ask(f.session, 'R');
         QCOMPARE(r.letter, '!');
         QCOMPARE(r.payload, QStringLiteral("02 NO PROGRAM"));
@@ -129,7 +129,7 @@ private slots:
 
     void cancelStopsTheDownloadAndKeepsTheOldProgram() {
         Fixture f;
-        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(f.link.isOpen(), 30000);
         Sc750Download download(f.session, partNumberBin());
         QSignalSpy done(&download, &Sc750Download::finished);
         connect(&download, &Sc750Download::progress, &download, [&download](qint64 sent, qint64) {
