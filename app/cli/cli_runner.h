@@ -1,11 +1,14 @@
 // servodesk-cli's engine: opens one connection (a fresh simulated drive, or a port) and runs the commands
-// in order through the same session and transfers as the IDE. Event-driven: main() runs the event loop
-// and exits with done()'s code. stdout carries machine-readable output, stderr progress and reasons.
+// in order through the family's DriveSession, the same contract and transfers as the IDE's. Event-driven:
+// main() runs the event loop and exits with done()'s code. stdout carries machine-readable output, stderr
+// progress and reasons. The verbs are the same for every family as far as the drive allows (issue 17);
+// vars and record are the BDS5's own (cli_bds5.cpp).
 #pragma once
 
 #include "cli_options.h"
 
-#include "serialport/bds5_session.h"
+#include "drive_core/drive.h"
+#include "serialport/drive_session.h"
 #include "serialport/link.h"
 
 #include <QByteArray>
@@ -13,8 +16,10 @@
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 
 namespace serialport {
+class Bds5Session;
 class Bds5Transfer;
 struct Bds5TransferResult;
 } // namespace serialport
@@ -42,20 +47,23 @@ private:
     void progress(const QString& text);
 
     void check(const CliCommand& c);
+    void compile(const CliCommand& c);
     void transfer(const CliCommand& c);
     void sendLines(const QStringList& lines, int index);
     void run(const CliCommand& c);
     void stop();
+    // The BDS5's own verbs (cli_bds5.cpp).
+    serialport::Bds5Session* bds5Session();
+    void bds5Vars(const CliCommand& c);
     void record(const CliCommand& c);
     void play(const CliCommand& c);
-    void watchTransfer(serialport::Bds5Transfer* transfer, const CliCommand& c);
-    void transferDone(const CliCommand& c, const serialport::Bds5TransferResult& result);
+    void bds5TransferDone(const CliCommand& c, const serialport::Bds5TransferResult& result);
 
     CliOptions m_options;
+    drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
     std::size_t m_next = 0;
     std::unique_ptr<serialport::Link> m_link;
-    std::unique_ptr<serialport::Bds5Session> m_session;
-    QByteArray m_raw; // what the drive sent while a run is followed
+    std::unique_ptr<serialport::DriveSession> m_session;
     QTimer m_deadline;
     bool m_following = false;
     bool m_failed = false;

@@ -72,8 +72,59 @@ with tempfile.TemporaryDirectory() as tmp:
     check("stop", r.returncode == 0, r)
     r = cli("frobnicate")
     check("usage", r.returncode == 2 and "usage:" in r.stderr, r)
-    r = cli("--drive", "sc750", "send", "P 1")
-    check("unsupported family", r.returncode == 2 and "not supported yet" in r.stderr, r)
+    r = cli("--drive", "sc900", "send", "P 1")
+    check("unknown family", r.returncode == 2 and "unknown drive" in r.stderr, r)
+    r = cli("compile", hello)
+    check("compile is the SC750's", r.returncode == 2 and "only the SC750" in r.stderr, r)
+
+    # The SC750 (issue 17): the same verbs. A ServoBASIC program from the manual's own examples, compiled by
+    # the drive's compiler, downloaded (the drive checks the .BIN's CRC-32), run and uploaded back.
+    bas = os.path.join(tmp, "COUNT.BAS")
+    with open(bas, "w") as f:
+        f.write('DIM I AS INTEGER\nFOR I = 1 TO 3\n  PRINT "COUNT "; I\nNEXT I\nEND\n')
+    bad_bas = os.path.join(tmp, "BAD.BAS")
+    with open(bad_bas, "w") as f:
+        f.write("DIM I AS INTEGER\nGOTO NOWHERE\nEND\n")
+    r = cli("--drive", "sc750", "check", bas)
+    check("sc750 check clean", r.returncode == 0 and r.stdout == "", r)
+    r = cli("--drive", "sc750", "check", bad_bas)
+    check("sc750 check error", r.returncode == 1 and r.stdout.startswith(f"{bad_bas}:2:") and "NOWHERE" in r.stdout, r)
+    binary = os.path.join(tmp, "OUT.BIN")
+    r = cli("--drive", "sc750", "compile", bas, "-o", binary)
+    check("sc750 compile", r.returncode == 0 and os.path.exists(binary) and open(binary, "rb").read(4) != b"", r)
+    up_bas = os.path.join(tmp, "UP.BAS")
+    r = cli("--drive", "sc750", "download", bas, "run", "--follow", "3", "upload", up_bas)
+    check("sc750 download run upload", r.returncode == 0 and "CRC-32" in r.stdout
+          and "COUNT  1 \nCOUNT  2 \nCOUNT  3 \n" in r.stdout, r)
+    check("sc750 upload text", os.path.exists(up_bas) and open(up_bas).read() == open(bas).read(),
+          open(up_bas).read() if os.path.exists(up_bas) else "")
+    r = cli("--drive", "sc750", "send", "KVP=200", "KVP")
+    check("sc750 send", r.returncode == 0 and r.stdout == "200\n200\n", r)
+    r = cli("--drive", "sc750", "send", "NO.SUCH.THING")
+    check("sc750 send error", r.returncode == 1 and "!13" in r.stderr, r)
+    r = cli("--drive", "sc750", "download", bad_bas)
+    check("sc750 download compile error", r.returncode == 1 and "old program" in r.stderr, r)
+
+    # The PMC-960: MPL at its prompt, a routine downloaded (verified by the communications checksum), run by
+    # its label, and its refusal when the servo is not enabled (#B6).
+    mpl = os.path.join(tmp, "MOVE.MPL")
+    with open(mpl, "w") as f:
+        f.write("@T\nSM2\nV10\nI4000+\nD100\nG!\n")
+    r = cli("--drive", "pmc960", "send", "A3500", "A?")
+    check("pmc960 send", r.returncode == 0 and r.stdout == "3500\n", r)
+    r = cli("--drive", "pmc960", "send", "Y")
+    check("pmc960 send error", r.returncode == 1 and "#" in r.stderr, r)
+    up_mpl = os.path.join(tmp, "UP.MPL")
+    r = cli("--drive", "pmc960", "download", mpl, "run", "T", "--follow", "5", "upload", up_mpl)
+    check("pmc960 download run upload", r.returncode == 0 and "communications checksum" in r.stdout
+          and int(r.stdout.splitlines()[1]) > 0, r)
+    check("pmc960 upload text", os.path.exists(up_mpl) and open(up_mpl).read() == open(mpl).read(),
+          open(up_mpl).read() if os.path.exists(up_mpl) else "")
+    idle = os.path.join(tmp, "IDLE.MPL")
+    with open(idle, "w") as f:
+        f.write("@T\nI4000+\n")
+    r = cli("--drive", "pmc960", "download", idle, "run", "T", "--follow", "5")
+    check("pmc960 run refused", r.returncode == 1 and "#B6" in r.stderr and "SM2" in r.stderr, r)
     r = cli("--port", "/dev/pts/does-not-exist", "send", "P 1")
     check("no port", r.returncode == 3 and r.stderr.count("\n") == 1, r)
 
@@ -85,6 +136,17 @@ with tempfile.TemporaryDirectory() as tmp:
     finally:
         sim.terminate()
         sim.wait(5)
+
+    for family, program, run_args, expect in (("sc750", bas, ["run", "--follow", "3"], "COUNT  3"),
+                                              ("pmc960", mpl, ["run", "T", "--follow", "5"], "checksum")):
+        sim = subprocess.Popen([SIM, "--drive", family, "--pty"], stdout=subprocess.PIPE, text=True)
+        try:
+            pty = sim.stdout.readline().split()[1]
+            r = cli("--drive", family, "--port", pty, "download", program, *run_args)
+            check(f"{family} pty", r.returncode == 0 and expect in r.stdout, r)
+        finally:
+            sim.terminate()
+            sim.wait(5)
 
 print(f"servodesk-cli: {passed} passed, {failed} failed")
 sys.exit(1 if failed else 0)

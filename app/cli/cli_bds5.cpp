@@ -1,0 +1,148 @@
+// servodesk-cli: the BDS5's own verbs — .VAR files (DUMP and NAME value lines) and RECORD/PLAY to CSV —
+// on the Bds5Session behind the DriveSession contract.
+#include "cli_runner.h"
+
+#include "cli_files.h"
+
+#include "drive_core/catalog/bds5_catalog.h"
+#include "serialport/bds5_drive_session.h"
+#include "serialport/bds5_variables_from_drive.h"
+#include "serialport/bds5_variables_to_drive.h"
+
+#include <memory>
+
+namespace app::cli {
+
+using serialport::Bds5Session;
+
+serialport::Bds5Session* CliRunner::bds5Session() {
+    auto* bds5 = dynamic_cast<serialport::Bds5DriveSession*>(m_session.get());
+    return bds5 ? &bds5->bds5() : nullptr;
+}
+
+// vars dump FILE.VAR / vars send FILE.VAR. Only the BDS5 has a variable file a drive reads and writes line by
+// line; the SC750's parameters and the PMC-960's table are the IDE's for now.
+void CliRunner::bds5Vars(const CliCommand& c) {
+    Bds5Session* session = bds5Session();
+    if (!session)
+        return fail(kUsage, QStringLiteral("vars: only the BDS5's .VAR files are read and written by servodesk-cli; "
+                                           "use the IDE's variable browser for this drive"));
+    serialport::Bds5Transfer* t = nullptr;
+    if (c.kind == CliCommand::Kind::VarsSend) {
+        QString error;
+        const auto text = readTextFile(c.args[0], error);
+        if (!text) return fail(kUsage, error);
+        t = new serialport::Bds5VariablesToDrive(*session, *text, this);
+    } else {
+        t = new serialport::Bds5VariablesFromDrive(*session, this);
+    }
+    connect(t, &serialport::Bds5Transfer::progress, this, [this](int done, int total) {
+        progress(total > 0 ? QStringLiteral("%1/%2 lines").arg(done).arg(total) : QStringLiteral("%1 lines").arg(done));
+    });
+    connect(t, &serialport::Bds5Transfer::finished, this, [this, t, c](const serialport::Bds5TransferResult& r) {
+        progress(QString());
+        t->deleteLater();
+        bds5TransferDone(c, r);
+    });
+    t->start();
+}
+
+void CliRunner::bds5TransferDone(const CliCommand& c, const serialport::Bds5TransferResult& r) {
+    for (const auto& e : r.errors)
+        out(QStringLiteral("%1:%2: ERR %3 '%4' %5\n")
+                .arg(c.args.value(0))
+                .arg(e.sourceLine)
+                .arg(e.error.code)
+                .arg(e.error.entry, e.error.message));
+    if (!r.ok()) return fail(kDriveError, r.summary);
+    QString error;
+    if (c.kind == CliCommand::Kind::VarsDump &&
+        !writeTextFile(c.args[0], r.lines.join(QLatin1Char('\n')) + QLatin1Char('\n'), error))
+        return fail(kUsage, error);
+    if (!r.errors.isEmpty()) return fail(kDriveError, r.summary);
+    out(r.summary + QLatin1Char('\n'));
+    next();
+}
+
+// record: RECORD n t vars, the optional trigger, wait n*t ms of drive time, then PLAY into the scope's CSV.
+void CliRunner::record(const CliCommand& c) {
+    Bds5Session* session = bds5Session();
+    if (!session)
+        return fail(kUsage, QStringLiteral("record: RECORD/PLAY is the BDS5's; the IDE's Watch Variables plots "
+                                           "this drive's values"));
+    QStringList lines{QStringLiteral("RECORD %1 %2 %3")
+                          .arg(c.recordCount)
+                          .arg(c.recordIntervalMs)
+                          .arg(c.recordVariables.join(QLatin1Char(' ')))};
+    if (!c.recordThen.isEmpty()) lines << c.recordThen;
+    auto* guard = new QObject(this);
+    auto left = std::make_shared<int>(int(lines.size())); // answers still to come
+    connect(session, &Bds5Session::finished, guard,
+            [this, guard, left, c](quint64, const serialport::Bds5Response& r) {
+                if (!r.errors.isEmpty()) {
+                    guard->deleteLater();
+                    return fail(kDriveError, QStringLiteral("the drive refused \"%1\": ERR %2 %3")
+                                                 .arg(r.command)
+                                                 .arg(r.errors.first().code)
+                                                 .arg(r.errors.first().message));
+                }
+                if (--*left > 0) return;
+                guard->deleteLater();
+                const int waitMs = int(double(c.recordCount) * c.recordIntervalMs / m_speed) + 200;
+                progress(QStringLiteral("recording %1 samples").arg(c.recordCount));
+                QTimer::singleShot(waitMs, this, [this, c] { play(c); });
+            });
+    connect(session, &Bds5Session::failed, guard, [this, guard](quint64, const QString& why) {
+        guard->deleteLater();
+        fail(kNoAnswer, why);
+    });
+    for (const QString& l : lines) session->send(l);
+}
+
+// PLAY's first line repeats the set-up, then one line per sample, 12 columns a value (the drive's choice,
+// documented in drive_core/bds5/bds5_recorder.h). The CSV names variables, units and interval.
+void CliRunner::play(const CliCommand& c) {
+    Bds5Session* session = bds5Session();
+    const quint64 id = session->send(QStringLiteral("PLAY"));
+    auto* guard = new QObject(this);
+    connect(
+        session, &Bds5Session::finished, guard,
+        [this, guard, id, c](quint64 done, const serialport::Bds5Response& r) {
+            if (done != id) return;
+            guard->deleteLater();
+            progress(QString());
+            if (!r.errors.isEmpty())
+                return fail(kDriveError,
+                            QStringLiteral("PLAY: ERR %1 %2").arg(r.errors.first().code).arg(r.errors.first().message));
+            QString csv = QStringLiteral("# ServoDesk RECORD %1 samples every %2 ms\n")
+                              .arg(c.recordCount)
+                              .arg(c.recordIntervalMs);
+            csv += QStringLiteral("time_s");
+            for (const QString& v : c.recordVariables) {
+                const auto ref = drive_core::catalog::bds5::findVariable(v.toStdString());
+                const QString unit =
+                    ref ? QString::fromLatin1(ref->info->units.data(), qsizetype(ref->info->units.size())) : QString();
+                csv += QStringLiteral(",%1 [%2]").arg(v, unit);
+            }
+            csv += QLatin1Char('\n');
+            int samples = 0;
+            for (int i = 1; i < r.lines.size(); ++i) { // line 0 repeats the RECORD set-up
+                const QStringList values = r.lines[i].split(QLatin1Char(' '), Qt::SkipEmptyParts);
+                if (values.size() != c.recordVariables.size()) continue;
+                csv += QString::number(double(samples) * c.recordIntervalMs / 1000.0, 'f', 3);
+                for (const QString& v : values) csv += QLatin1Char(',') + v;
+                csv += QLatin1Char('\n');
+                ++samples;
+            }
+            if (samples == 0) return fail(kDriveError, QStringLiteral("PLAY returned no samples"));
+            QString error;
+            if (!writeTextFile(c.csvPath, csv, error)) return fail(kUsage, error);
+            out(QStringLiteral("%1 samples of %2 written to %3\n")
+                    .arg(samples)
+                    .arg(c.recordVariables.join(QLatin1Char(',')))
+                    .arg(c.csvPath));
+            next();
+        });
+}
+
+} // namespace app::cli
