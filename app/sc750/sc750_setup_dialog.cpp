@@ -25,6 +25,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 namespace app {
 
 namespace catalog = drive_core::catalog::sc750;
@@ -99,6 +101,14 @@ void Sc750SetupDialog::setMotorPart(const QString& part) {
     m_part->setText(part);
 }
 
+// As Motion Dialogue writes the PARAMS block (L2505-2525): an integer parameter plain ("ILC = 59"), a real
+// one with six decimals ("SIX.THRESH = 3147.836538", "KVI = 5.000000").
+QString Sc750SetupDialog::paramsValue(const std::string& name, double value) {
+    const catalog::VariableInfo* info = catalog::findVariable(name);
+    if (info && info->type == catalog::ValueType::Integer) return QString::number(std::llround(value));
+    return QString::number(value, 'f', 6);
+}
+
 void Sc750SetupDialog::compute() {
     m_fromProgram = false;
     const bool gentle = m_response->currentIndex() == 1;
@@ -119,7 +129,8 @@ void Sc750SetupDialog::compute() {
         auto* name = new QTableWidgetItem(QString::fromStdString(values[std::size_t(row)].first));
         name->setFlags(name->flags() & ~Qt::ItemIsEditable);
         m_table->setItem(row, 0, name);
-        m_table->setItem(row, 1, new QTableWidgetItem(QString::number(values[std::size_t(row)].second, 'g', 9)));
+        m_table->setItem(row, 1, new QTableWidgetItem(paramsValue(values[std::size_t(row)].first,
+                                                                  values[std::size_t(row)].second)));
     }
     showMode();
 }

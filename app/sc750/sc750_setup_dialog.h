@@ -12,6 +12,8 @@
 // 100/500 Hz (large inertia mismatch, belts). The System Response choice serves both modes.
 #pragma once
 
+#include <string>
+
 #include <QDialog>
 
 class QComboBox;
@@ -36,6 +38,8 @@ public:
     QString paramsBlock() const;
     // Replaces the PARAMS block of text (or puts one at the top) with block.
     static QString withParams(const QString& text, const QString& block);
+    // A parameter's value as the PARAMS block shows it.
+    static QString paramsValue(const std::string& name, double value);
 
     // File > Edit Parameters: Manual, with the values of text's PARAMS block where it has them.
     void loadParams(const QString& text);

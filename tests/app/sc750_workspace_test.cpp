@@ -251,7 +251,10 @@ private slots:
         setup->setMotorPart(QStringLiteral("R45G"));
         const QString medium = setup->paramsBlock();
         QVERIFY(medium.contains(QStringLiteral("ILC = 59\n")));
-        QVERIFY(medium.contains(QStringLiteral("SIX.THRESH = 3147.83654\n")));
+        // The manual's own PARAMS block for this motor (L2505-2525): reals with six decimals.
+        QVERIFY2(medium.contains(QStringLiteral("SIX.THRESH = 3147.836538\n")), qPrintable(medium));
+        QVERIFY(medium.contains(QStringLiteral("SIG.THRESH = 2833.052885\n")));
+        QVERIFY(medium.contains(QStringLiteral("POLECOUNT = 4\n")));
         QVERIFY(setup->status().contains(QStringLiteral("R45G")));
         setup->setMotorPart(QStringLiteral("R63G"));
         QVERIFY(setup->paramsBlock() != medium);
