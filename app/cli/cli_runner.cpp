@@ -5,6 +5,7 @@
 
 #include "drive_core/bds5/bds5_checker.h"
 #include "drive_core/drive_factory.h"
+#include "drive_core/pmc960/pmc960_checker.h"
 #include "drive_core/sc750/sc750_compiler.h"
 #include "serialport/serial_port_link.h"
 #include "serialport/simulator_link.h"
@@ -150,7 +151,12 @@ void CliRunner::check(const CliCommand& c) {
             report(compiled.error->line, compiled.error->column, QString::fromStdString(compiled.error->message));
         break;
     case drive_core::DriveFamily::Pmc960:
-        return fail(kUsage, QStringLiteral("check: the PMC-960's MPL has no checker yet"));
+        for (const auto& d : drive_core::pmc960::checkProgram(text->toStdString()))
+            report(d.line, d.column + 1,
+                   d.code ? QStringLiteral("#%1 %2").arg(QString::number(d.code, 16).toUpper(),
+                                                         QString::fromStdString(d.message))
+                          : QString::fromStdString(d.message));
+        break;
     }
     for (const QString& line : found) out(line + QLatin1Char('\n'));
     if (!found.isEmpty()) return fail(kDriveError, QStringLiteral("%1: %2 diagnostic(s)").arg(c.args[0]).arg(found.size()));

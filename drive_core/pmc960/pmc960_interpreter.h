@@ -60,6 +60,10 @@ public:
     bool idle() const { return !m_running && m_wait == Pmc960Wait::None && m_phase == Phase::Idle; }
     // Inside a NUL-prefixed binary number: the next byte is data whatever its value (only 1DH is doubled).
     bool readingBinaryNumber() const { return m_binaryBytes > 0; }
+    // The command being read, upper case ("B", "TGP"; empty at command level), and the label a B, F or L
+    // has read (0 until then). For the program checker (pmc960_checker.cpp), which reads through this machine.
+    const std::string& command() const { return m_command; }
+    char label() const { return m_label; }
 
     // The text a display character produces for command (upper case: "V", "SF", "TG", "SB"), kind one of
     // ? ! &. Empty if the command has no such display. Used for polls and % streams too.

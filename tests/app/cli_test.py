@@ -110,6 +110,13 @@ with tempfile.TemporaryDirectory() as tmp:
     mpl = os.path.join(tmp, "MOVE.MPL")
     with open(mpl, "w") as f:
         f.write("@T\nSM2\nV10\nI4000+\nD100\nG!\n")
+    r = cli("--drive", "pmc960", "check", mpl)
+    check("pmc960 check clean", r.returncode == 0 and r.stdout == "", r)
+    bad_mpl = os.path.join(tmp, "BAD.MPL")
+    with open(bad_mpl, "w") as f:
+        f.write("@T\nBZ\n")
+    r = cli("--drive", "pmc960", "check", bad_mpl)
+    check("pmc960 check label", r.returncode == 1 and r.stdout.startswith(f"{bad_mpl}:2:") and "#C2" in r.stdout, r)
     r = cli("--drive", "pmc960", "send", "A3500", "A?")
     check("pmc960 send", r.returncode == 0 and r.stdout == "3500\n", r)
     r = cli("--drive", "pmc960", "send", "Y")
