@@ -1,5 +1,5 @@
-// servodesk: the IDE's entry point. Opens the main window connected to a simulated BDS5 (or --port), or
-// runs the screenshot tour and exits.
+// servodesk: the IDE's entry point. Opens the main window connected to a simulated BDS5 (or --drive's family,
+// or --port) with that family's sample program, or runs the screenshot tour and exits.
 #include "command_line.h"
 #include "editing/document_controller.h"
 #include "editing/editor_area.h"
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
         for (const char* name : {"XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"})
             qputenv(name, tourHome.filePath(QString::fromLatin1(name)).toLocal8Bit());
 
-    app::MainWindow window;
+    app::MainWindow window(options->connection.family); // the family's own sample program in the first tab
     if (options->screenshotTourDir.isEmpty()) {
         window.restoreLayout();
         window.connectDrive(options->connection);

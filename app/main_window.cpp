@@ -36,6 +36,7 @@
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
@@ -51,7 +52,7 @@ constexpr int kStatusMessageMs = 10000;
 constexpr double kTerminalShare = 0.40; // of the window height, on first show
 } // namespace
 
-MainWindow::MainWindow(QWidget* parent)
+MainWindow::MainWindow(drive_core::DriveFamily family, QWidget* parent)
     : QMainWindow(parent), m_editorArea(new EditorArea(this)), m_terminalDock(new TerminalDock(this)),
       m_connection(new DriveConnection(this)), m_documents(m_editorArea->documents()) {
     resources::initialize();
@@ -81,7 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
         m_editorArea->reloadKeymap();
     });
 
-    m_documents->openTemplate(resources::kSampleProgram, QStringLiteral("hello.bds"));
+    openSampleProgram(family);
     followEditor(editor());
     updateTitle();
     terminal()->setFocus();
@@ -178,6 +179,13 @@ void MainWindow::showFamily(drive_core::DriveFamily family) {
     if (m_family == family) return;
     m_family = family;
     emit familyChanged(family);
+}
+
+// Each family opens with a program in its own language: hello.bds in front of an SC750 compiles to errors.
+void MainWindow::openSampleProgram(drive_core::DriveFamily family) {
+    const FamilyWorkspace* w = workspace(family);
+    const QString sample = w && !w->sampleProgram().isEmpty() ? w->sampleProgram() : resources::kSampleProgram;
+    m_documents->openTemplate(sample, QFileInfo(sample).fileName());
 }
 
 void MainWindow::disconnectActive() {

@@ -46,7 +46,9 @@ class TerminalWidget;
 class MainWindow final : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(QWidget* parent = nullptr);
+    // family: the drive family the IDE starts with (servodesk --drive); the first tab is its sample program
+    // (hello.bds, hello.bas, hello.mpl). Connecting is connectDrive()'s.
+    explicit MainWindow(drive_core::DriveFamily family = drive_core::DriveFamily::Bds5, QWidget* parent = nullptr);
     ~MainWindow() override;
 
     // Replaces the current connection (if any) with a new one and opens it. A choice of another family
@@ -111,6 +113,7 @@ private:
     void showLinkError(const QString& message);
     void showAbout();
     void showFamily(drive_core::DriveFamily family); // menus, toolbars and docks of that family only
+    void openSampleProgram(drive_core::DriveFamily family); // as an unnamed tab, never written back
     void disconnectActive();
 
     EditorArea* m_editorArea;

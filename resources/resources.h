@@ -9,8 +9,11 @@ namespace resources {
 // Registers the ":/" files of this library with Qt. Idempotent; call before the first QFile(":/...").
 void initialize();
 
-// The sample program the IDE opens with (a BDS5 .BDS file).
+// The sample program the IDE opens with (a BDS5 .BDS file), and those of the other families, opened instead
+// when the IDE starts with that family (servodesk --drive sc750|pmc960): ServoBASIC Plus and MPL.
 inline const QString kSampleProgram = QStringLiteral(":/samples/hello.bds");
+inline const QString kSc750SampleProgram = QStringLiteral(":/samples/hello.bas");
+inline const QString kPmc960SampleProgram = QStringLiteral(":/samples/hello.mpl");
 // STANDARD.VAR: the BDS5 factory variable set (.VAR), generated from the drive catalog at build time.
 inline const QString kStandardVariables = QStringLiteral(":/variables/STANDARD.VAR");
 // The application icon (SVG; shown where Qt's SVG image plugin is installed).

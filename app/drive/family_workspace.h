@@ -39,6 +39,9 @@ public:
     virtual QString statusText() const = 0;
     // The family's errors for the Error Log dock (owned by the workspace), or nullptr.
     virtual ErrorSource* errorSource() const { return nullptr; }
+    // The family's sample program, a resource (":/samples/hello.bas"): the first tab when the IDE starts
+    // with this family, named after the resource's file name. Empty: the BDS5's opens instead.
+    virtual QString sampleProgram() const { return {}; }
     // The Terminal dock while this workspace is active: bytes typed there (urgent: ^X, Esc). False when the
     // family has no terminal of its own (the main window then says where to type instead).
     virtual bool typeIntoTerminal(const QByteArray& bytes, bool urgent) {

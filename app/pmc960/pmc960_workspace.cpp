@@ -6,8 +6,9 @@
 #include "pmc960_status_dock.h"
 #include "pmc960_watch_source.h"
 
-#include "main_window.h"
 #include "errors/pmc960_error_source.h"
+#include "main_window.h"
+#include "resources/resources.h"
 #include "scope/watch_view.h"
 
 #include <QMenu>
@@ -166,6 +167,10 @@ void Pmc960Workspace::deactivate() {
 
 ErrorSource* Pmc960Workspace::errorSource() const {
     return m_errors;
+}
+
+QString Pmc960Workspace::sampleProgram() const {
+    return resources::kPmc960SampleProgram;
 }
 
 bool Pmc960Workspace::isConnected() const {

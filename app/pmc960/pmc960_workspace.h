@@ -38,6 +38,7 @@ public:
     bool isConnected() const override;
     QString statusText() const override;
     ErrorSource* errorSource() const override;
+    QString sampleProgram() const override; // hello.mpl
     // MPL is typed at the controller's } prompt: the Terminal talks to it (Esc = Stop).
     bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 

@@ -20,6 +20,7 @@
 #include "terminal_dock.h"
 
 #include "editor/program_editor.h"
+#include "resources/resources.h"
 
 #include <QAction>
 #include <QKeyEvent>
@@ -235,6 +236,10 @@ void Sc750Workspace::setAxis(int axis) {
 
 ErrorSource* Sc750Workspace::errorSource() const {
     return m_errors;
+}
+
+QString Sc750Workspace::sampleProgram() const {
+    return resources::kSc750SampleProgram;
 }
 
 bool Sc750Workspace::isConnected() const {

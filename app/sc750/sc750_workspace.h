@@ -47,6 +47,7 @@ public:
     bool isConnected() const override;
     QString statusText() const override;
     ErrorSource* errorSource() const override;
+    QString sampleProgram() const override; // hello.bas
 
     // The session while the link is open, else nullptr.
     serialport::Sc750Session* session() const { return m_connected ? m_session.get() : nullptr; }

@@ -1,7 +1,10 @@
-// MainWindow against the simulated BDS5: what a user sees on start-up and after typing in the terminal.
+// MainWindow against the simulated BDS5: what a user sees on start-up and after typing in the terminal; and
+// that every family starts with its own sample program (servodesk --drive sc750 showed the BDS5's hello.bds).
 #include "app/drive/drive_connection.h"
-#include "app/main_window.h"
 #include "app/drive/terminal_widget.h"
+#include "app/editing/editor_area.h"
+#include "app/editing/editor_tabs.h"
+#include "app/main_window.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"
@@ -14,6 +17,7 @@
 #include <QTest>
 
 using app::MainWindow;
+using drive_core::DriveFamily;
 
 namespace {
 constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
@@ -55,6 +59,45 @@ private slots:
         QVERIFY(!window.editor()->isModified());
         QVERIFY(window.editor()->filePath().isEmpty()); // saving asks for a name, never writes the resource
         QVERIFY(window.windowTitle().startsWith(QStringLiteral("hello.bds")));
+    }
+
+    void eachFamilyStartsWithItsOwnSampleProgram_data() {
+        QTest::addColumn<DriveFamily>("family");
+        QTest::addColumn<QString>("resource");
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QStringList>("shown"); // lines of the family's language the user sees
+        QTest::newRow("BDS5") << DriveFamily::Bds5 << resources::kSampleProgram << QStringLiteral("hello.bds")
+                              << QStringList{QStringLiteral("10$"), QStringLiteral("P \"HELLO, WORLD\"")};
+        QTest::newRow("SC750") << DriveFamily::Sc750 << resources::kSc750SampleProgram << QStringLiteral("hello.bas")
+                               << QStringList{QStringLiteral("PRINT \"Hello, world\""), QStringLiteral("GO.INCR"),
+                                              QStringLiteral("END ' Main Program")};
+        QTest::newRow("PMC-960") << DriveFamily::Pmc960 << resources::kPmc960SampleProgram
+                                 << QStringLiteral("hello.mpl")
+                                 << QStringList{QStringLiteral("@H_Hello"), QStringLiteral("I+,"),
+                                                QStringLiteral("G!")};
+    }
+
+    // As main() does for servodesk --drive FAMILY: the window made for the family, then connected to it.
+    void eachFamilyStartsWithItsOwnSampleProgram() {
+        QFETCH(DriveFamily, family);
+        QFETCH(QString, resource);
+        QFETCH(QString, name);
+        QFETCH(QStringList, shown);
+        MainWindow window(family);
+        window.connectDrive(app::ConnectionChoice::simulator(family));
+        window.show();
+
+        QFile sample(resource);
+        QVERIFY2(sample.open(QIODevice::ReadOnly), qPrintable(resource));
+        QCOMPARE(window.editorArea()->tabs()->count(), 1);
+        const QString text = window.editor()->text();
+        QCOMPARE(text, QString::fromUtf8(sample.readAll()));
+        for (const QString& line : shown) QVERIFY2(text.contains(line), qPrintable(line));
+        if (family != DriveFamily::Bds5) QVERIFY(!text.contains(QStringLiteral("HELLO, WORLD"))); // not hello.bds
+        QVERIFY(window.windowTitle().startsWith(name));
+        QCOMPARE(window.editorArea()->tabs()->tabText(0), name);
+        QVERIFY(!window.editor()->isModified());
+        QVERIFY(window.editor()->filePath().isEmpty()); // saving asks for a name, never writes the resource
     }
 
     void terminalShowsSignOnThenHelloWorld() {
