@@ -89,8 +89,10 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                      .cleanUp = [demo] {
                          if (auto* language = *demo ? MplLanguage::of(*demo) : nullptr) language->hideHelp();
                      }});
+    auto settle = std::make_shared<int>(0); // polls to wait after an index was sent before judging it
     steps.push_back({.name = QStringLiteral("pmc960-status"),
-                     .act = [&window] {
+                     .act = [&window, settle] {
+                         *settle = 40;
                          Pmc960StatusDock* status = pmc960(window)->statusDock();
                          status->show();
                          status->setFloating(true);
@@ -100,10 +102,19 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          status->sendCommand(QStringLiteral("V30")); // 3,000 counts/s: caught mid-move
                          status->sendCommand(QStringLiteral("I12000+"));
                      },
-                     .ready = [&window] {
+                     .ready = [&window, settle] {
                          Pmc960StatusDock* status = pmc960(window)->statusDock();
                          const int position = status->value(QStringLiteral("position")).toInt();
-                         return position > 1000 && position < 11000 && status->value(QStringLiteral("velocity")).toInt() > 0 &&
+                         // A stalled machine can miss the 4 s move between two polls: once an index has ended
+                         // at either end, the next goes the other way, until one is caught mid-move.
+                         if (*settle > 0) {
+                             --*settle;
+                         } else if (status->value(QStringLiteral("togo")) == QLatin1String("0") &&
+                                    status->value(QStringLiteral("velocity")).toInt() == 0) {
+                             status->sendCommand(position >= 6000 ? QStringLiteral("I12000-") : QStringLiteral("I12000+"));
+                             *settle = 40;
+                         }
+                         return position > 1000 && position < 11000 && status->value(QStringLiteral("velocity")).toInt() != 0 &&
                                 status->value(QStringLiteral("outputs")) == QLatin1String("0005");
                      },
                      .grab = [&window] { return pmc960(window)->statusDock()->grab(); },
