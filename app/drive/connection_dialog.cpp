@@ -56,9 +56,10 @@ ConnectionDialog::ConnectionDialog(QWidget* parent)
         m_baud->addItem(QString::number(rate), rate);
     auto* lineForm = new QFormLayout;
     lineForm->addRow(tr("Baud rate:"), m_baud);
-    auto* lineNote = new QLabel(tr("8 data bits, no parity, 1 stop bit, no flow control."), this);
-    lineNote->setEnabled(false);
-    lineForm->addRow(QString(), lineNote);
+    m_lineNote = new QLabel(this);
+    m_lineNote->setObjectName(QStringLiteral("lineNote"));
+    m_lineNote->setEnabled(false);
+    lineForm->addRow(QString(), m_lineNote);
 
     auto* driveBox = new QGroupBox(tr("Drive"), this);
     auto* driveLayout = new QVBoxLayout(driveBox);
@@ -140,6 +141,11 @@ void ConnectionDialog::updateEnabled() {
     const auto family = drive_core::DriveFamily(m_family->currentData().toInt());
     m_simulatorNote->setText(tr("A %1 simulated inside ServoDesk. No hardware needed.")
                                  .arg(ConnectionChoice::familyName(family)));
+    // The PMC-960's port runs with RTS/CTS: its one-character receive buffer overruns without it (seed-pmc960
+    // §4.1, connection_choice.cpp); the others use three wires.
+    m_lineNote->setText(family == drive_core::DriveFamily::Pmc960
+                            ? tr("8 data bits, no parity, 1 stop bit, RTS/CTS flow control.")
+                            : tr("8 data bits, no parity, 1 stop bit, no flow control."));
 }
 
 } // namespace app

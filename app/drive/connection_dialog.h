@@ -31,6 +31,7 @@ private:
 
     QComboBox* m_family;
     QLabel* m_simulatorNote;
+    QLabel* m_lineNote; // the line's settings for the family chosen
     QRadioButton* m_simulator;
     QRadioButton* m_serial;
     QComboBox* m_port;

@@ -3,7 +3,9 @@
 
 #include <qcustomplot.h>
 
+#include <QDialogButtonBox>
 #include <QLabel>
+#include <QShortcut>
 #include <QVBoxLayout>
 
 namespace app {
@@ -48,9 +50,16 @@ BodeView::BodeView(QWidget* parent)
     m_summary->setObjectName(QStringLiteral("bodeSummary"));
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Close and Esc (the plot takes the keyboard focus, so Esc is a shortcut of the whole view).
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    escape->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(escape, &QShortcut::activated, this, &QDialog::reject);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_plot, 1);
     layout->addWidget(m_summary);
+    layout->addWidget(buttons);
     resize(760, 600);
 }
 

@@ -12,6 +12,8 @@
 
 #include <qcustomplot.h>
 
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -91,6 +93,16 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(bode));
         bode->plot()->replot(QCustomPlot::rpImmediateRefresh);
         QVERIFY2(distinctColours(bode->plot()->grab().toImage()) > 20, "the Bode plot is blank");
+
+        // Esc closes it, wherever the focus is (the plot takes it), and so does its Close button.
+        bode->plot()->setFocus();
+        QTest::keyClick(bode->plot(), Qt::Key_Escape);
+        QTRY_VERIFY(!bode->isVisible());
+        bode->show();
+        auto* close = bode->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Close);
+        QVERIFY(close && close->isVisible());
+        close->click();
+        QVERIFY(!bode->isVisible());
     }
 
     void watchingPfbWhileJoggingShowsItRiseAndStopEndsThePolls() {

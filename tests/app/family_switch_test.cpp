@@ -129,8 +129,13 @@ private slots:
         auto* combo = dialog.findChild<QComboBox*>(QStringLiteral("familyCombo"));
         QVERIFY(combo);
         QVERIFY(combo->currentText().contains(QStringLiteral("PMC-960")));
+        // The line's settings as the link will open them: RTS/CTS for the PMC-960, three wires for the others.
+        auto* line = dialog.findChild<QLabel*>(QStringLiteral("lineNote"));
+        QVERIFY(line);
+        QVERIFY2(line->text().contains(QStringLiteral("RTS/CTS")), qPrintable(line->text()));
         combo->setCurrentIndex(combo->findData(int(DriveFamily::Sc750)));
         QCOMPARE(dialog.choice().family, DriveFamily::Sc750);
+        QVERIFY2(line->text().contains(QStringLiteral("no flow control")), qPrintable(line->text()));
     }
 
     void theCommandLineChoosesTheFamily() {
