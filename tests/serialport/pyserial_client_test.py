@@ -25,8 +25,21 @@ def main(sim):
         first = proc.stdout.readline().decode().strip()
         assert first.startswith("PTY /dev/"), first
         with serial.Serial(first[4:], 9600, timeout=0.2) as port:
-            signon = read_until(port, b"\r\n-->")
-            assert b"BDS5" in signon, signon
+            # The drive signs on as it powers up, whether or not a terminal is open yet: what was sent before
+            # the port opened is gone (as with a real drive), so the sign-on seen is its tail, or nothing.
+            signon = b""
+            deadline = time.monotonic() + 3.0
+            while not signon and time.monotonic() < deadline:
+                signon = port.read(1)
+            if signon:
+                signon += read_until(port, b"\r\n-->")
+            full = b"BDS5 DIGITAL SERVO DRIVE  V3.0.0  (SERVODESK SIMULATION)\r\n-->"
+            if signon.endswith(b"\r\n-->"):
+                assert full.endswith(signon.lstrip(b"\r\n")), signon
+            else:
+                assert signon == b"", signon
+                port.write(b"\r")
+                assert read_until(port, b"\r\n-->") == b"\r\n-->"
             port.write(b'P "HELLO, WORLD"\r')
             answer = read_until(port, b"HELLO, WORLD\r\n-->")
             assert answer == b'P "HELLO, WORLD"\r\nHELLO, WORLD\r\n-->', answer
