@@ -3,6 +3,7 @@
 
 #include "pmc960_parameter_dock.h"
 #include "pmc960_program_transfer.h"
+#include "pmc960_routine_runner.h"
 #include "pmc960_status_dock.h"
 #include "pmc960_watch_source.h"
 
@@ -23,7 +24,8 @@ constexpr char kEsc = '\x1b';
 Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     : FamilyWorkspace(&window), m_window(window), m_transfer(new Pmc960ProgramTransfer(*this)),
       m_status(new Pmc960StatusDock(&window)), m_parameters(new Pmc960ParameterDock(&window)),
-      m_menu(new QMenu(tr("&MPL"), &window)), m_errors(new Pmc960ErrorSource(*this)) {
+      m_menu(new QMenu(tr("&MPL"), &window)), m_errors(new Pmc960ErrorSource(*this)),
+      m_runner(new Pmc960RoutineRunner(*this)) {
     connect(&m_reconnector, &LinkReconnector::lost, this, [this](const QString& description) {
         emit message(tr("The connection to the PMC-960 was lost (%1). Reconnecting every second; nothing in the "
                         "editors is affected. Drive > Disconnect stops trying.")
@@ -38,6 +40,11 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     QAction* upload = m_menu->addAction(tr("&Upload Program"), QKeySequence(Qt::SHIFT | Qt::Key_F6), m_transfer,
                                         &Pmc960ProgramTransfer::upload);
     upload->setStatusTip(tr("Read the PMC-960's program buffer into a new tab"));
+    // Ctrl+F5 beside Shift+F5/F6 (download, upload): free in every family (tests/app/shortcuts_test.cpp).
+    QAction* runRoutine = m_menu->addAction(tr("&Run Routine..."), QKeySequence(Qt::CTRL | Qt::Key_F5), this,
+                                            &Pmc960Workspace::runRoutine);
+    runRoutine->setStatusTip(tr("Run a labelled routine of the editor's program (B<label>), enabling the servo "
+                                "first if asked"));
     m_menu->addSeparator();
     QAction* stopAction = m_menu->addAction(tr("&Stop"), QKeySequence(tr("Ctrl+Alt+X")), this, &Pmc960Workspace::stop);
     stopAction->setStatusTip(tr("Send ESC: abort the running program, wait or half-typed command"));
@@ -60,9 +67,16 @@ Pmc960Workspace::~Pmc960Workspace() {
     // The docks belong to the window and may outlive the session: let go of it first.
     blockSignals(true); // the window is going: no status updates from the link closing
     if (m_link) m_link->disconnect(this);
-    if (m_session) m_session->disconnect(this);
+    if (m_session) {
+        m_session->disconnect(this);
+        m_session->disconnect(m_runner);
+    }
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
+}
+
+Pmc960RunDialog* Pmc960Workspace::runRoutine() {
+    return m_runner->ask();
 }
 
 WatchView* Pmc960Workspace::watchVariables() {
@@ -101,13 +115,16 @@ void Pmc960Workspace::activate(const ConnectionChoice& choice) {
         m_connected = false;
         m_status->setSession(nullptr);
         m_parameters->setSession(nullptr);
+        m_runner->reset();
         updateActions();
         emit statusChanged();
     });
     m_reconnector.watch(m_link.get()); // after the handler above: lost is said once the state shows it
     connect(m_session.get(), &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
     connect(m_session.get(), &serialport::Pmc960Session::shownReceived, this, &Pmc960Workspace::terminalReceived);
+    connect(m_session.get(), &serialport::Pmc960Session::shownReceived, m_runner, &Pmc960RoutineRunner::onShown);
     connect(m_session.get(), &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
+        if (m_runner->explainRefusal(code)) return; // said with what to do about the routine
         emit message(tr("PMC-960: %1").arg(Pmc960ProgramTransfer::describeError(code)));
     });
     m_link->open();
@@ -143,6 +160,7 @@ void Pmc960Workspace::onLinkError(const QString& text) {
         m_connected = false;
         m_status->setSession(nullptr);
         m_parameters->setSession(nullptr);
+        m_runner->reset();
         updateActions();
         emit statusChanged();
     }
@@ -154,6 +172,7 @@ void Pmc960Workspace::deactivate() {
     m_connected = false;
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
+    m_runner->reset();
     if (m_session) m_session->disconnect(this);
     if (m_link) {
         m_link->disconnect(this);
@@ -202,13 +221,15 @@ void Pmc960Workspace::stop() {
         return;
     }
     m_session->cancelPending();
+    m_runner->reset(); // the prompt after ESC ends no routine of ours
     m_link->write(QByteArray(1, kEsc));
     emit message(tr("Stop: ESC sent to the PMC-960"));
 }
 
 void Pmc960Workspace::updateActions() {
     const bool ready = m_connected && !m_transfer->isBusy();
-    for (const QString& text : {QStringLiteral("Download Program"), QStringLiteral("Upload Program")})
+    for (const QString& text :
+         {QStringLiteral("Download Program"), QStringLiteral("Upload Program"), QStringLiteral("Run Routine")})
         if (QAction* a = action(text)) a->setEnabled(ready);
     if (QAction* a = action(QStringLiteral("Stop"))) a->setEnabled(m_connected);
 }

@@ -1,5 +1,5 @@
 // Pmc960Workspace: the ORMEC PMC-960 inside ServoDesk (issue 9). Owns the PMC-960 link and its
-// Pmc960Session while connected, the MPL menu (download and upload of the program buffer, Stop), the
+// Pmc960Session while connected, the MPL menu (download and upload of the program buffer, Run Routine, Stop), the
 // status panel and the parameter table. Shown by the main window while the PMC-960 is the chosen family;
 // MPL editing itself (.mpl tabs) is MplLanguage's. GUI thread only.
 #pragma once
@@ -21,6 +21,8 @@ class MainWindow;
 class Pmc960ErrorSource;
 class Pmc960ParameterDock;
 class Pmc960ProgramTransfer;
+class Pmc960RoutineRunner;
+class Pmc960RunDialog;
 class Pmc960StatusDock;
 class WatchView;
 
@@ -50,6 +52,7 @@ public:
     bool isReconnecting() const { return m_reconnector.isReconnecting(); }
     MainWindow& window() const { return m_window; }
     Pmc960ProgramTransfer& transfer() const { return *m_transfer; }
+    Pmc960RoutineRunner& runner() const { return *m_runner; }
     Pmc960StatusDock* statusDock() const { return m_status; }
     Pmc960ParameterDock* parameterDock() const { return m_parameters; }
     QMenu* menu() const { return m_menu; }
@@ -59,6 +62,9 @@ public:
     // Stop: ESC to the controller at once (ahead of anything queued), which aborts a running program, a
     // wait or a half-typed command (digest §4.6); queued commands are dropped.
     void stop();
+    // Run Routine: the labels of the editor's program to choose from; the choice is typed as B<label> (SM2
+    // first if asked). Returns the dialog (open, not blocking), nullptr while disconnected.
+    Pmc960RunDialog* runRoutine();
     // Watch Variables: the scope's polled rolling chart of this family's values (one window, reused).
     WatchView* watchVariables();
 
@@ -79,6 +85,7 @@ private:
     Pmc960ParameterDock* m_parameters;
     QMenu* m_menu;
     Pmc960ErrorSource* m_errors;
+    Pmc960RoutineRunner* m_runner;
     QPointer<WatchView> m_watch;
     QString m_linkText;
     bool m_connected = false;

@@ -2,11 +2,16 @@
 // replaces the BDS5's; a manual example downloads with its checksum verified and uploads unchanged; a
 // program too big for the buffer gets the controller's #C1 with its line; the status panel follows a move;
 // the parameter table shows stored vs in-use values and an edit reaches the controller; .mpl tabs use MPL;
-// Stop during a download cancels it.
+// Stop during a download cancels it; MPL > Run Routine lists the editor's labels and runs one, enabling the
+// servo first if asked, and a refusal says the program in the drive may differ.
+#include "app/drive/terminal_widget.h"
+#include "app/errors/error_source.h"
 #include "app/main_window.h"
 #include "app/pmc960/mpl_language.h"
 #include "app/pmc960/pmc960_parameter_dock.h"
 #include "app/pmc960/pmc960_program_transfer.h"
+#include "app/pmc960/pmc960_routine_runner.h"
+#include "app/pmc960/pmc960_run_dialog.h"
 #include "app/pmc960/pmc960_status_dock.h"
 #include "app/pmc960/pmc960_workspace.h"
 
@@ -17,13 +22,20 @@
 #include "document_controller.h"
 #include "editor_area.h"
 #include "editor_tabs.h"
+#include "resources/resources.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QFile>
+#include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
+#include <QPointer>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -34,6 +46,7 @@ using drive_core::DriveFamily;
 
 namespace {
 constexpr int kTimeoutMs = 20000;
+constexpr int kRunTimeoutMs = 30000; // a routine that moves runs in the simulator's real time
 
 QString example(const char* name) {
     QFile file(QStringLiteral(PMC960_EXAMPLES "/") + QLatin1String(name));
@@ -56,6 +69,29 @@ editor::ProgramEditor* newMplTab(MainWindow& window, const QString& name, const 
     e->setText(text);
     return e;
 }
+
+// MPL > Download Program for the current tab; true once the controller's checksum matched.
+bool downloadCurrentTab(Pmc960Workspace& ws) {
+    QSignalSpy downloaded(&ws.transfer(), &app::Pmc960ProgramTransfer::downloadFinished);
+    ws.action(QStringLiteral("Download Program"))->trigger();
+    if (!QTest::qWaitFor([&] { return downloaded.count() == 1; }, kTimeoutMs)) return false;
+    return downloaded.at(0).at(0).value<serialport::Pmc960DownloadResult>().ok;
+}
+
+// MPL > Run Routine, as the user opens it: the dialog that appears.
+app::Pmc960RunDialog* openRunRoutine(MainWindow& window, Pmc960Workspace& ws) {
+    QAction* run = ws.action(QStringLiteral("Run Routine"));
+    if (!run || !run->isEnabled()) return nullptr;
+    run->trigger();
+    auto* dialog = window.findChild<app::Pmc960RunDialog*>();
+    return dialog && QTest::qWaitForWindowExposed(dialog) ? dialog : nullptr;
+}
+
+QStringList itemTexts(const QListWidget* list) {
+    QStringList texts;
+    for (int i = 0; i < list->count(); ++i) texts << list->item(i)->text();
+    return texts;
+}
 } // namespace
 
 class Pmc960WorkspaceTest : public QObject {
@@ -68,6 +104,7 @@ private slots:
         QSettings().clear();
         qRegisterMetaType<serialport::Pmc960DownloadResult>();
         qRegisterMetaType<editor::ProgramEditor*>();
+        resources::initialize(); // the sample program, hello.mpl
     }
 
     void connectingShowsTheMplMenu() {
@@ -166,6 +203,112 @@ private slots:
         QCOMPARE(window.editor()->text(), program);
         QTRY_VERIFY_WITH_TIMEOUT(ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
         QVERIFY(ws.action(QStringLiteral("Download Program"))->isEnabled());
+    }
+
+    // MPL > Run Routine (the MPL menu had no Run): the labels of hello.mpl as the dialog lists them, comment
+    // lines (@.) left out; H picked with Enter and "Enable the servo first" ticked types SM2 then BH, and the
+    // Terminal shows what BH shows (12288: three turns).
+    void runRoutineListsTheLabelsAndRunsHelloWithTheServoEnabledFirst() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected() && ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusDock()->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")),
+                                 kTimeoutMs);
+        QFile sample(ws.sampleProgram());
+        QVERIFY(sample.open(QIODevice::ReadOnly));
+        newMplTab(window, QStringLiteral("hello.mpl"), QString::fromUtf8(sample.readAll()));
+        QVERIFY(downloadCurrentTab(ws));
+        QCOMPARE(ws.action(QStringLiteral("Run Routine"))->shortcut(), QKeySequence(QStringLiteral("Ctrl+F5")));
+
+        app::Pmc960RunDialog* dialog = openRunRoutine(window, ws);
+        QVERIFY(dialog);
+        QCOMPARE(dialog->windowTitle(), QStringLiteral("Run Routine"));
+        QCOMPARE(itemTexts(dialog->list()),
+                 QStringList({QStringLiteral("H  Hello: set up, then three turns forward"),
+                              QStringLiteral("T  Turn: index one turn, wait for the end; LT2 repeats it twice more"),
+                              QStringLiteral("P  Position: let the motor settle 250 ms, show its position, quit"),
+                              QStringLiteral("R  Return: set up, three turns back, then show the position"),
+                              QStringLiteral("S  Set up: drive on in position mode, acceleration, speed, one turn")}));
+        QVERIFY2(dialog->servoNote().contains(QStringLiteral("not enabled (SM0)")), qPrintable(dialog->servoNote()));
+        QVERIFY(dialog->enableServoFirst()->isVisible());
+        QVERIFY(!dialog->enableServoFirst()->isChecked()); // enabling the servo is the user's choice
+
+        QSignalSpy finished(&ws.runner(), &app::Pmc960RoutineRunner::finished);
+        dialog->list()->setCurrentRow(0);
+        QTest::keyClick(dialog->enableServoFirst(), Qt::Key_Space);
+        QVERIFY(dialog->enableServoFirst()->isChecked());
+        QPointer<app::Pmc960RunDialog> open(dialog);
+        QTest::keyClick(dialog->list(), Qt::Key_Return); // Enter in the list: Run
+        QTRY_VERIFY_WITH_TIMEOUT(!open || !open->isVisible(), kTimeoutMs);
+
+        app::TerminalWidget* terminal = window.terminal();
+        QTRY_VERIFY2_WITH_TIMEOUT(terminal->text().contains(QStringLiteral("BH12288")), qPrintable(terminal->text()),
+                                  kRunTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kRunTimeoutMs);
+        QCOMPARE(finished.at(0).at(0).value<QChar>(), QLatin1Char('H'));
+        QCOMPARE(finished.at(0).at(1).toInt(), 0);
+        const QString text = terminal->text();
+        QVERIFY2(text.lastIndexOf(QStringLiteral("SM2")) >= 0 &&
+                     text.lastIndexOf(QStringLiteral("SM2")) < text.lastIndexOf(QStringLiteral("BH12288")),
+                 qPrintable(text)); // SM2 went first
+        QVERIFY2(ws.runner().lastMessage().contains(QStringLiteral("Routine H ended")),
+                 qPrintable(ws.runner().lastMessage()));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusDock()->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM2")),
+                                 kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(ws.statusDock()->value(QStringLiteral("position")), QStringLiteral("12288"),
+                                  kTimeoutMs);
+    }
+
+    // A routine the controller refuses: with the servo off (SM0) and "Enable the servo first" left unticked,
+    // H's move gets #B6, and the status bar, the Terminal and the error log say so, with the hint that the
+    // program in the drive may differ from the editor and how to download it. A program without labels
+    // offers nothing to run.
+    void aRefusedRoutineSaysTheProgramInTheDriveMayDiffer() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected() && ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+
+        newMplTab(window, QStringLiteral("nolabels.mpl"), QStringLiteral("@.only_a_comment\nA100\n"));
+        app::Pmc960RunDialog* empty = openRunRoutine(window, ws);
+        QVERIFY(empty);
+        QCOMPARE(empty->list()->count(), 0);
+        QVERIFY(!empty->runButton()->isEnabled());
+        bool saysNone = false;
+        for (const QLabel* label : empty->findChildren<QLabel*>())
+            saysNone |= label->isVisible() && label->text().contains(QStringLiteral("has no labels"));
+        QVERIFY(saysNone);
+        empty->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.findChild<app::Pmc960RunDialog*>(), kTimeoutMs);
+
+        newMplTab(window, QStringLiteral("turn.mpl"), QStringLiteral("@H_Half_a_turn\nI2048+,\nG!\nE\n"));
+        QVERIFY(downloadCurrentTab(ws));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusDock()->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")),
+                                 kTimeoutMs);
+        app::Pmc960RunDialog* dialog = openRunRoutine(window, ws);
+        QVERIFY(dialog);
+        QCOMPARE(itemTexts(dialog->list()), QStringList(QStringLiteral("H  Half a turn")));
+        QVERIFY(dialog->servoNote().contains(QStringLiteral("SM0")));
+        QVERIFY(!dialog->enableServoFirst()->isChecked());
+        QSignalSpy finished(&ws.runner(), &app::Pmc960RoutineRunner::finished);
+        QTest::mouseClick(dialog->runButton(), Qt::LeftButton);
+
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kRunTimeoutMs);
+        QCOMPARE(finished.at(0).at(1).toInt(), 0xB6);
+        const QString said = ws.runner().lastMessage();
+        QVERIFY2(said.contains(QStringLiteral("#B6")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("may differ from the editor")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("MPL > Download Program, Shift+F5")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("Enable the servo first (SM2)")), qPrintable(said));
+        // Where the user looks: the status bar, the Terminal, the error log.
+        QTRY_COMPARE_WITH_TIMEOUT(window.statusBar()->currentMessage(), said, kTimeoutMs);
+        QTRY_VERIFY2_WITH_TIMEOUT(window.terminal()->text().contains(QStringLiteral("may differ from the editor")),
+                                  qPrintable(window.terminal()->text()), kTimeoutMs);
+        const app::ErrorLogModel& log = ws.errorSource()->model();
+        QTRY_VERIFY_WITH_TIMEOUT(log.rowCount() > 0, kTimeoutMs);
+        QCOMPARE(log.entry(0).codeText, QStringLiteral("#B6"));
+        QVERIFY(!ws.runner().isRunning());
     }
 
     void statusPanelFollowsAMove() {
