@@ -1,5 +1,6 @@
 // MainWindow: composition and wiring.
 #include "main_window.h"
+#include "status_bar_room.h"
 
 #include "capture_dock.h"
 #include "capture_log.h"
@@ -41,6 +42,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -49,7 +51,8 @@ namespace app {
 
 namespace {
 constexpr int kStatusMessageMs = 10000;
-constexpr double kTerminalShare = 0.40; // of the window height, on first show
+constexpr double kTerminalShare = 0.30; // of the window height, on first show: the program comes first
+constexpr QSize kDefaultSize(1200, 800); // on a screen that has room for it
 } // namespace
 
 MainWindow::MainWindow(drive_core::DriveFamily family, QWidget* parent)
@@ -57,7 +60,7 @@ MainWindow::MainWindow(drive_core::DriveFamily family, QWidget* parent)
       m_connection(new DriveConnection(this)), m_documents(m_editorArea->documents()) {
     resources::initialize();
     setObjectName(QStringLiteral("mainWindow"));
-    resize(1200, 800);
+    resizeToFitScreen();
     setCentralWidget(m_editorArea);
     addDockWidget(Qt::BottomDockWidgetArea, m_terminalDock);
 
@@ -324,6 +327,9 @@ void MainWindow::createStatusBar() {
     m_editorArea->installStatusWidgets(statusBar());
     m_diagnosticsStatus = new editor::DiagnosticsStatus(this); // the drive's errors in the current program
     statusBar()->insertPermanentWidget(0, m_diagnosticsStatus);
+    const auto* editorCell = statusBar()->findChild<QLabel*>(QStringLiteral("editorSizeLabel"));
+    new StatusBarRoom(*statusBar(), {editorCell ? editorCell->parentWidget() : nullptr, m_portLabel->parentWidget(),
+                                     m_modeLabel->parentWidget()});
     updateLinkStatus();
 }
 
@@ -386,7 +392,8 @@ void MainWindow::updateLinkStatus() {
     m_linkLabel->setText(hasLink ? m_connection->linkDescription() : tr("No drive"));
     // A serial link's description already names its port and rate ("/dev/ttyUSB0 9600 8N1").
     const bool simulated = m_connection->choice().kind == ConnectionChoice::Kind::Simulator;
-    m_portLabel->setText(hasLink ? m_connection->choice().portText() : QString());
+    // The link label already says "Simulated BDS5": the port cell adds the rate alone.
+    m_portLabel->setText(hasLink ? tr("%1 baud").arg(m_connection->choice().baudRate) : QString());
     m_portLabel->parentWidget()->setVisible(hasLink && simulated);
     if (!m_connection->isConnected()) m_modeLabel->setText(tr("Mode: \u2014"));
     m_disconnectAction->setEnabled(m_connection->isConnected());
@@ -454,6 +461,18 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     event->accept();
+}
+
+// A laptop's 1366×768 (or 1024×768) screen is smaller than the default size: a window taller than the screen
+// hides its status bar below the edge. Room is left for a window manager's title bar and a panel.
+void MainWindow::resizeToFitScreen() {
+    const QScreen* where = screen();
+    if (!where) {
+        resize(kDefaultSize);
+        return;
+    }
+    const QSize room = where->availableGeometry().size() - QSize(16, 64);
+    resize(kDefaultSize.boundedTo(room).expandedTo(QSize(640, 480)));
 }
 
 void MainWindow::showEvent(QShowEvent* event) {

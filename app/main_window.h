@@ -103,6 +103,7 @@ private:
     void createMenus();
     void createDriveTools(); // drive and debug toolbars, capture, options, help (before createMenus)
     void createStatusBar();
+    void resizeToFitScreen();
     void wireConnection();
     void typeIntoTerminal(const QByteArray& bytes, bool urgent);
     void followEditor(editor::ProgramEditor* current); // outline, diagnostics count, F1 -> reference

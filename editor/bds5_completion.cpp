@@ -83,6 +83,9 @@ std::vector<Bds5Completion> bds5Completions(const QString& prefix) {
         const QString shown =
             v.firstIndex > 0 ? QStringLiteral("%1%2..%1%3").arg(name).arg(v.firstIndex).arg(v.lastIndex) : name;
         add(name, shown, variableNote(v));
+        if (v.extendedLastIndex > v.lastIndex) // v3: X251..X750 exist only while EXTDX is on
+            add(name, QStringLiteral("%1%2..%1%3").arg(name).arg(v.lastIndex + 1).arg(v.extendedLastIndex),
+                QStringLiteral("with %1 on (v3)").arg(str(v.extendedBy)));
     }
     std::sort(out.begin(), out.end(),
               [](const Bds5Completion& a, const Bds5Completion& b) { return a.display < b.display; });

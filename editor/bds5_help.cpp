@@ -85,9 +85,14 @@ QString writeText(cat::WriteCondition w) {
 }
 
 QString variableHtml(const cat::VariableInfo& v) {
-    const QString name = v.firstIndex > 0
-                             ? QStringLiteral("%1%2..%1%3").arg(esc(v.name)).arg(v.firstIndex).arg(v.lastIndex)
-                             : esc(v.name);
+    QString name = v.firstIndex > 0 ? QStringLiteral("%1%2..%1%3").arg(esc(v.name)).arg(v.firstIndex).arg(v.lastIndex)
+                                    : esc(v.name);
+    if (v.extendedLastIndex > v.lastIndex) // v3: X251..X750 while EXTDX is on
+        name += QStringLiteral(", %1%2..%1%3 with %4 on")
+                    .arg(esc(v.name))
+                    .arg(v.lastIndex + 1)
+                    .arg(v.extendedLastIndex)
+                    .arg(esc(v.extendedBy));
     QString html = QStringLiteral("<p style=\"margin:0\"><b>%1</b> &nbsp;%2</p>")
                        .arg(name, muted(v.isSwitch ? QStringLiteral("switch") : QStringLiteral("variable")));
     QStringList facts;

@@ -9,7 +9,7 @@ build_deps=(
   libeigen3-dev libgl-dev qt6-qpa-plugins libqt6svg6 fonts-dejavu-core
 )
 test_deps=(
-  desktop-file-utils appstream dpkg-dev file
+  desktop-file-utils appstream dpkg-dev file lintian
   libgtest-dev libgmock-dev xvfb xauth python3 python3-serial socat picocom clang libclang-rt-14-dev
 )
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 namespace scope {
 
@@ -39,6 +40,34 @@ CursorReadout readCursors(const Capture& capture, double first_s, double second_
         const double a = valueAt(capture, c, first_s);
         const double b = valueAt(capture, c, second_s);
         r.rows.push_back({capture.channels[c].name, capture.channels[c].unit, a, b, b - a});
+    }
+    return r;
+}
+
+double valueAt(const Channel& channel, double t_s) {
+    const auto& s = channel.samples;
+    if (s.empty()) return 0;
+    if (t_s <= s.front().time_s) return s.front().value;
+    if (t_s >= s.back().time_s) return s.back().value;
+    // The first sample after t; the one before it is at or before t (times ascend, SeriesStore::append).
+    const auto after =
+        std::upper_bound(s.begin(), s.end(), t_s, [](double t, const Sample& x) { return t < x.time_s; });
+    const Sample& a = *std::prev(after);
+    const Sample& b = *after;
+    const double span = b.time_s - a.time_s;
+    return span > 0 ? a.value + (t_s - a.time_s) / span * (b.value - a.value) : b.value;
+}
+
+CursorReadout readCursors(const SeriesStore& store, double first_s, double second_s) {
+    CursorReadout r;
+    r.first_s = first_s;
+    r.second_s = second_s;
+    r.delta_s = second_s - first_s;
+    for (std::size_t c = 0; c < store.channelCount(); ++c) {
+        const Channel& channel = store.channel(c);
+        const double a = valueAt(channel, first_s);
+        const double b = valueAt(channel, second_s);
+        r.rows.push_back({channel.name, channel.unit, a, b, b - a});
     }
     return r;
 }

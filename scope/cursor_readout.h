@@ -1,8 +1,10 @@
 // The two scope cursors' readout, widget-free: each channel's value at both cursor times (linearly
-// interpolated between samples) and the differences, as the plot's status line shows them.
+// interpolated between samples) and the differences, as the plot's status line shows them — of a capture, or
+// of a store's live (time, value) samples.
 #pragma once
 
 #include "capture.h"
+#include "series_store.h"
 
 #include <string>
 #include <vector>
@@ -29,5 +31,8 @@ struct CursorReadout {
 // The channel's value at time t (clamped to the record), interpolated; 0 for an empty channel.
 double valueAt(const Capture& capture, std::size_t channel, double t_s);
 CursorReadout readCursors(const Capture& capture, double first_s, double second_s);
+// The same over samples at their own times (clamped to the first and last), as live traces hold them.
+double valueAt(const Channel& channel, double t_s);
+CursorReadout readCursors(const SeriesStore& store, double first_s, double second_s);
 
 } // namespace scope

@@ -148,6 +148,7 @@ void ScopePlot::showCapture(const Capture& capture, bool keepPrevious) {
     recolourOverlays();
     const double end = capture.sampleCount() > 1 ? capture.timeAt(capture.sampleCount() - 1) : 1.0;
     if (!cursorsVisible() || m_cursorTime[1] > end) setCursors(end * 0.25, end * 0.75);
+    updateReadout(); // the cursors stayed where they were: their values are the new trace's
     autoScale();
     emit overlaysChanged();
 }
@@ -170,6 +171,7 @@ void ScopePlot::beginLive(const std::vector<std::pair<std::string, std::string>>
         m_graphs.append(g);
     }
     applyTheme();
+    updateReadout();
 }
 
 void ScopePlot::appendLive(std::size_t channel, double time_s, double value) {
@@ -191,6 +193,7 @@ void ScopePlot::syncFromStore() {
         if (first != samples.end()) m_syncedUntil[c] = samples.back().time_s;
         if (!samples.empty()) m_graphs[qsizetype(c)]->data()->removeBefore(samples.front().time_s);
     }
+    updateReadout(); // new samples under the cursors (at most once per kSyncMs)
     requestReplot();
 }
 
@@ -269,8 +272,10 @@ bool ScopePlot::cursorsVisible() const {
     return m_cursor[0]->visible();
 }
 
+// A capture's samples, or the live ones in the store when the trace came by appendLive().
 CursorReadout ScopePlot::readout() const {
-    return readCursors(m_capture, m_cursorTime[0], m_cursorTime[1]);
+    return m_capture.channels.empty() ? readCursors(m_store, m_cursorTime[0], m_cursorTime[1])
+                                      : readCursors(m_capture, m_cursorTime[0], m_cursorTime[1]);
 }
 
 void ScopePlot::updateReadout() {

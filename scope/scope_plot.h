@@ -56,6 +56,7 @@ public:
     void setCursors(double first_s, double second_s);
     void setCursorsVisible(bool visible);
     bool cursorsVisible() const;
+    // What the line under the plot shows, kept current as the cursors move, a trace is shown or live data arrive.
     CursorReadout readout() const;
 
     void autoScale();

@@ -37,7 +37,14 @@ void Bds5RecordPlay::cancel() {
         finishCancelled();
 }
 
+void Bds5RecordPlay::abort(const QString& summary) {
+    if (!isRunning() || isCancelling()) return;
+    m_abortSummary = summary;
+    cancel();
+}
+
 void Bds5RecordPlay::begin() {
+    m_abortSummary.clear();
     m_stage = Stage::Record;
     m_nextCommand = 0;
     m_commandInFlight = false;
@@ -78,6 +85,7 @@ void Bds5RecordPlay::answered(const Bds5Response& response) {
         }
         if (isCancelling()) return finishCancelled();
         m_since.start();
+        m_lateMs = 0;
         m_stage = Stage::Commands;
         emit stageChanged(tr("Recording %1 every %2 ms").arg(variablesText()).arg(m_plan.intervalMs));
         m_tick.start();
@@ -91,10 +99,14 @@ void Bds5RecordPlay::answered(const Bds5Response& response) {
         return tick();
     }
     case Stage::Play: {
+        emit playEnded(true);
         if (isCancelling()) {
-            m_result.status = Bds5TransferResult::Status::Cancelled;
-            m_result.summary = tr("Reading the recording was cancelled; it stays on the drive (PLAY again "
-                                  "to read it).");
+            m_result.status = m_abortSummary.isEmpty() ? Bds5TransferResult::Status::Cancelled
+                                                       : Bds5TransferResult::Status::Failed;
+            m_result.summary = m_abortSummary.isEmpty()
+                                   ? tr("Reading the recording was cancelled; it stays on the drive (PLAY again "
+                                        "to read it).")
+                                   : m_abortSummary;
             return finish(m_result);
         }
         if (!response.errors.isEmpty() && response.errors.first().code == kNothingRecorded && !response.garbled) {
@@ -147,13 +159,16 @@ void Bds5RecordPlay::tick() {
     const int total = m_plan.durationMs() + m_plan.marginMs;
     emit progress(int(std::min<qint64>(elapsed, total)), total);
     if (m_nextCommand < m_plan.commands.size()) {
+        // The commands keep their spacing: one the host sent late (a loaded host stalls for seconds) delays
+        // those after it, rather than the next going out at once and cutting the move short on the drive.
         const Bds5RecordPlan::TimedCommand& c = m_plan.commands[m_nextCommand];
-        if (elapsed < c.atMs) return;
+        if (elapsed < c.atMs + m_lateMs) return;
+        m_lateMs = elapsed - c.atMs;
         ++m_nextCommand;
         m_commandInFlight = true;
         return send(c.line);
     }
-    if (elapsed >= total) sendPlay();
+    if (elapsed >= total + m_lateMs) sendPlay();
 }
 
 void Bds5RecordPlay::sendPlay() {
@@ -169,6 +184,7 @@ void Bds5RecordPlay::sendPlay() {
     emit stageChanged(
         m_plays == 1 ? tr("Reading %n sample(s) (PLAY)", nullptr, m_plan.samples)
                      : tr("Reading %n sample(s) again to check them (PLAY %1)", nullptr, m_plan.samples).arg(m_plays));
+    emit playSent(m_plays); // before the PLAY goes out: its echo may come back at once
     send(QStringLiteral("PLAY"));
     countLinesInto(0, m_plan.samples + 1);
 }
@@ -200,11 +216,18 @@ void Bds5RecordPlay::finishCancelled() {
         motionLeft && !m_plan.onCancel.isEmpty()
             ? tr("The recording was cancelled; \"%1\" was sent to end the test move.").arg(m_plan.onCancel)
             : tr("The recording was cancelled; nothing was read from the drive.");
+    if (!m_abortSummary.isEmpty()) {
+        m_result.status = Bds5TransferResult::Status::Failed;
+        m_result.summary = m_abortSummary;
+        if (motionLeft && !m_plan.onCancel.isEmpty())
+            m_result.summary += tr(" \"%1\" was sent to end the test move.").arg(m_plan.onCancel);
+    }
     finish(m_result);
 }
 
 void Bds5RecordPlay::lost(const QString& reason) {
     m_tick.stop();
+    if (m_stage == Stage::Play) emit playEnded(false);
     if (m_stage == Stage::Play && m_listing && !isCancelling()) {
         m_listing->addLostCopy(); // the session asks for a prompt again; the next PLAY waits for it
         return playAgainOrFail(reason);

@@ -42,6 +42,16 @@ public:
 
     const Bds5RecordPlan& plan() const { return m_plan; }
     void cancel() override;
+    // Stops like cancel() because the test move went wrong (app::MoveWatch: the drive refused a command or
+    // faulted while recording); finished() then reports Failed with this summary instead of Cancelled.
+    void abort(const QString& summary);
+
+signals:
+    // A PLAY went out (reading 1, 2, ... of this recording): its listing follows in the session's output.
+    void playSent(int reading);
+    // That PLAY's answer is complete (answered true: up to the prompt), or was lost (false). Both come
+    // before the transfer goes on, so a terminal can fold each listing into one line.
+    void playEnded(bool answered);
 
 protected:
     void begin() override;
@@ -61,10 +71,12 @@ private:
     int m_nextCommand = 0;
     bool m_commandInFlight = false;
     QElapsedTimer m_since; // since the drive accepted RECORD
+    qint64 m_lateMs = 0;   // how late the last timed command went out
     QTimer m_tick;
     Bds5TransferResult m_result;              // errors of the plan's commands gather here
     std::optional<Bds5PlayListing> m_listing; // the PLAY copies read so far
     int m_plays = 0;
+    QString m_abortSummary; // abort()'s reason; "" for a user's cancel
 };
 
 } // namespace serialport

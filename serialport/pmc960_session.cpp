@@ -35,10 +35,12 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         m_timeout.stop();
         m_wake.stop();
         if (m_current) emit failed(m_current->id, QStringLiteral("link closed"));
+        m_pollSettle.stop();
         m_current.reset();
         m_heldTyped.clear();
         m_typedPrompts = 0;
         m_typedPartial = false;
+        typedLineClosed();
         setState(State::Closed);
     });
     connect(&m_timeout, &QTimer::timeout, this, &Pmc960Session::onTimeout);
@@ -51,8 +53,12 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
     m_typedSettle.setInterval(kTypedSettleMs);
     connect(&m_typedSettle, &QTimer::timeout, this, [this] {
         m_typedPrompts = 0; // the prompt owed is not coming
+        typedLineClosed();
         pump();
     });
+    m_cutIn.setSingleShot(true);
+    connect(&m_cutIn, &QTimer::timeout, this, &Pmc960Session::pump);
+    m_lineActive.start();
     m_settle.setSingleShot(true);
     // A link that delivers whole (quietMs 0: in-process, the fuzzer's) needs no settling time.
     m_settle.setInterval(m_link.quietMs() > 0 ? std::max(20, m_link.quietMs() * 4) : 0);
@@ -64,9 +70,21 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         setState(State::Ready);
         pump();
     });
+    m_pollSettle.setSingleShot(true);
+    m_pollSettle.setInterval(m_settle.interval());
+    connect(&m_pollSettle, &QTimer::timeout, this, [this] {
+        if (m_current && m_current->kind == Kind::Poll) takePollAnswer(true);
+    });
     connect(&m_statusTimer, &QTimer::timeout, this, [this] {
-        if (m_state != State::Ready || m_current || !m_queue.empty() || m_statusLetters.isEmpty() || typedLineOpen())
+        if (m_current || m_statusLetters.isEmpty()) return;
+        if (typedLineOpen()) {
+            // A typed command runs: one status poll at a time, and only once the line is quiet (the tick after).
+            const bool queued =
+                std::any_of(m_queue.begin(), m_queue.end(), [](const Request& q) { return q.kind == Kind::Poll; });
+            if (queued || cutInWaitMs() != 0) return;
+        } else if (m_state != State::Ready || !m_queue.empty()) {
             return;
+        }
         Request r;
         r.id = m_nextId++;
         r.kind = Kind::Poll;
@@ -115,10 +133,12 @@ void Pmc960Session::cancelPending() {
 
 void Pmc960Session::resynchronise(const QByteArray& first) {
     m_timeout.stop();
+    m_pollSettle.stop();
     const auto current = std::exchange(m_current, std::nullopt);
     m_inEditor = false;
     m_typedPrompts = 0;
     m_typedPartial = false;
+    typedLineClosed();
     m_buffer.clear();
     m_resync = first;
     m_silentAsks = 0;
@@ -180,23 +200,43 @@ void Pmc960Session::setState(State state) {
 }
 
 void Pmc960Session::pump() {
-    if (m_current) return;
+    if (m_current || m_replaying) return;
     if (!m_heldTyped.isEmpty() && (m_state == State::Ready || m_state == State::Busy)) {
         const QByteArray typed = std::exchange(m_heldTyped, {});
         noteTyped(typed);
         write(typed, true);
+        m_lineActive.restart();
     }
-    if (typedLineOpen() || m_queue.empty()) return;
-    // Everything waits for the prompt, except that polls and the editor's text need none (the editor
-    // gives no prompt until ESC, and a poll is answered at any time).
-    const Kind next = m_queue.front().kind;
-    if (m_state != State::Ready && !(m_state == State::Busy && (next != Kind::Command || m_inEditor))) return;
-    m_current = m_queue.front();
-    m_queue.pop_front();
-    m_buffer.clear();
+    if (m_queue.empty()) return;
+    if (typedLineOpen()) {
+        // The user's command runs and its prompt is still to come: requests wait for it, but a poll, which the
+        // controller answers at once between the steps of whatever it does (5.3.3, L821, L2554), may cut in —
+        // so the status panel and Watch Variables follow a routine typed as B<label>.
+        const auto poll =
+            std::find_if(m_queue.begin(), m_queue.end(), [](const Request& r) { return r.kind == Kind::Poll; });
+        if (poll == m_queue.end()) return;
+        const int waitMs = cutInWaitMs();
+        if (waitMs != 0) {
+            if (waitMs > 0) m_cutIn.start(waitMs);
+            return;
+        }
+        m_current = *poll;
+        m_current->cutIn = true;
+        m_queue.erase(poll);
+    } else {
+        // Everything waits for the prompt, except that polls and the editor's text need none (the editor
+        // gives no prompt until ESC, and a poll is answered at any time).
+        const Kind next = m_queue.front().kind;
+        if (m_state != State::Ready && !(m_state == State::Busy && (next != Kind::Command || m_inEditor))) return;
+        m_current = m_queue.front();
+        m_queue.pop_front();
+    }
     if (m_current->kind == Kind::Poll) {
+        // What came before it stays in the buffer (a prompt still arriving); its answer is looked for after.
+        m_pollFrom = m_buffer.size();
         write(QByteArray(1, kAttention) + m_current->bytes, false); // polls are not in the checksum
     } else {
+        m_buffer.clear();
         write(m_current->bytes, true);
         setState(State::Busy);
     }
@@ -204,15 +244,13 @@ void Pmc960Session::pump() {
     if (m_current->kind == Kind::Expect && m_current->expect.isEmpty()) complete();
 }
 
-// A poll is answered at any time, so a prompt still on its way comes ahead of the answer: the second prompt
-// of a command refused at its sign ("I4000+\r" while moving: #B2 and a prompt, then the CR read as an empty
-// command and prompted again), or a program's prompt as it ends. Such a prompt is the terminal's, not the answer (an answer never begins with CR); one cut short waits
-// for its last bytes.
-void Pmc960Session::dropPromptsBeforePollAnswer() {
-    while (m_buffer.startsWith("\r\n") && m_buffer.size() >= 4 && m_buffer.at(3) == '}') {
-        emit shownReceived(m_buffer.left(4));
-        m_buffer.remove(0, 4);
-    }
+// How long a poll still waits before it cuts into the typed command on the line: 0 now, -1 not into this one
+// (half typed, a % display, typed bytes held, a poll unanswered already, or the session is not Ready).
+int Pmc960Session::cutInWaitMs() const {
+    if (m_typedPartial || m_typedPrompts == 0 || m_typedStream || m_cutInUnanswered || !m_heldTyped.isEmpty() ||
+        m_state != State::Ready || m_inEditor)
+        return -1;
+    return int(std::max<qint64>(0, kTypedQuietMs - m_lineActive.elapsed()));
 }
 
 bool Pmc960Session::endsInPrompt() const {
@@ -222,33 +260,41 @@ bool Pmc960Session::endsInPrompt() const {
 
 void Pmc960Session::onBytes(const QByteArray& bytes) {
     emit rawReceived(bytes);
-    if (!m_current) emit shownReceived(bytes);
     m_silentAsks = 0;
+    take(bytes);
+}
+
+void Pmc960Session::take(const QByteArray& bytes) {
+    if (!m_current) {
+        emit shownReceived(bytes);
+        m_lineActive.restart();
+    }
     m_buffer.append(bytes);
-    if (m_current) {
-        // The editor's echo ended with a line end yet differs from what was typed: damaged on the wire one
-        // way or the other. Said at once rather than after the time-out.
-        // An error code on its way (#C1 buffer full: the editor stops and prompts) is not a damaged echo: the
-        // prompt that follows ends the request with the controller's own error.
-        if (m_current->kind == Kind::Expect && m_current->expect.endsWith("\r\n") && m_buffer.contains("\r\n") &&
-            !m_buffer.contains(m_current->expect) && !endsInPrompt() && !m_buffer.contains('#')) {
-            const quint64 id = m_current->id;
-            m_timeout.stop();
-            m_current.reset();
-            m_inEditor = true;
-            const QByteArray got = std::exchange(m_buffer, {});
-            emit failed(id, QStringLiteral("the echo differs: \"%1\"").arg(QString::fromLatin1(got.trimmed())));
-            pump();
-            return;
-        }
-        if (m_current->kind == Kind::Poll) dropPromptsBeforePollAnswer();
-        const bool done = (m_current->kind == Kind::Command && endsInPrompt()) ||
-                          (m_current->kind == Kind::Poll && m_buffer.contains('\r') && !m_buffer.startsWith('\r')) ||
-                          (m_current->kind == Kind::Expect &&
-                           (m_buffer.contains(m_current->expect) || endsInPrompt())); // or an error ended it
-        if (done) complete();
+    if (!m_current) return takeUnsolicited();
+    if (m_current->kind == Kind::Poll) return takePollAnswer(false);
+    // The editor's echo ended with a line end yet differs from what was typed: damaged on the wire one
+    // way or the other. Said at once rather than after the time-out.
+    // An error code on its way (#C1 buffer full: the editor stops and prompts) is not a damaged echo: the
+    // prompt that follows ends the request with the controller's own error.
+    if (m_current->kind == Kind::Expect && m_current->expect.endsWith("\r\n") && m_buffer.contains("\r\n") &&
+        !m_buffer.contains(m_current->expect) && !endsInPrompt() && !m_buffer.contains('#')) {
+        const quint64 id = m_current->id;
+        m_timeout.stop();
+        m_current.reset();
+        m_inEditor = true;
+        const QByteArray got = std::exchange(m_buffer, {});
+        emit failed(id, QStringLiteral("the echo differs: \"%1\"").arg(QString::fromLatin1(got.trimmed())));
+        pump();
         return;
     }
+    const bool done = (m_current->kind == Kind::Command && endsInPrompt()) ||
+                      (m_current->kind == Kind::Expect &&
+                       (m_buffer.contains(m_current->expect) || endsInPrompt())); // or an error ended it
+    if (done) complete();
+}
+
+// Bytes no request of ours waits for: the answers to typed commands, a routine's output, E-codes, prompts.
+void Pmc960Session::takeUnsolicited() {
     if (!endsInPrompt()) return;
     learnAxisId(m_buffer.at(m_buffer.size() - 2));
     for (auto it = errorCodePattern().globalMatch(QString::fromLatin1(m_buffer)); it.hasNext();) {
@@ -264,12 +310,63 @@ void Pmc960Session::onBytes(const QByteArray& bytes) {
     }
     m_buffer.clear();
     if (m_typedPrompts > 0 && --m_typedPrompts > 0) m_typedSettle.start(); // typed ahead: more prompts owed
+    typedLineClosed();
     pump(); // once the user's commands are done, our requests may go
+}
+
+// The answer to the poll in flight is "<value> CR" (DECISIONS.md: the controller ends a poll's reply with CR),
+// sent the moment the controller reads the poll: after whatever it had sent already — a prompt still on its
+// way (a command refused at its sign prompts twice), an error code, a routine's output and closing prompt. Every
+// other CR the controller sends is followed by LF (prompts, % samples, listings), so the answer ends at the first
+// CR that is not, and begins after the last prompt '}', line feed or #xx code before it; an answer is never
+// empty. A CR that is the last byte so far may be a CR LF cut short: while a typed command runs (its routine
+// may print and prompt at any time) the answer is taken once no LF has followed for m_pollSettle's time.
+void Pmc960Session::takePollAnswer(bool settled) {
+    m_pollSettle.stop();
+    for (qsizetype cr = m_buffer.indexOf('\r', m_pollFrom); cr >= 0; cr = m_buffer.indexOf('\r', cr + 1)) {
+        const bool last = cr + 1 == m_buffer.size();
+        if (!last && m_buffer.at(cr + 1) == '\n') continue;
+        qsizetype start = m_pollFrom;
+        for (qsizetype i = cr - 1; i >= m_pollFrom; --i) {
+            if (m_buffer.at(i) == '\n' || m_buffer.at(i) == '}') {
+                start = i + 1;
+                break;
+            }
+        }
+        const qsizetype hash = cr > 0 ? m_buffer.lastIndexOf('#', cr - 1) : -1;
+        if (hash >= start) start = std::min(cr, hash + 3);
+        if (start == cr) continue;
+        if (last && m_current->cutIn && !settled) return m_pollSettle.start();
+        return finishPoll(start, cr);
+    }
+}
+
+void Pmc960Session::finishPoll(qsizetype start, qsizetype cr) {
+    m_timeout.stop();
+    m_pollSettle.stop();
+    const Request request = *std::exchange(m_current, std::nullopt);
+    const QString value = QString::fromLatin1(m_buffer.mid(start, cr - start));
+    const QByteArray before = m_buffer.mid(m_pollFrom, start - m_pollFrom);
+    const QByteArray after = m_buffer.mid(cr + 1);
+    m_buffer.truncate(m_pollFrom);
+    // What came with the answer is the controller's own, taken as if the poll had not been on the line: the
+    // terminal shows it, a prompt in it ends the typed command, its #xx are reported. No request starts before
+    // all of it is taken (bytes that came before our next write cannot be that request's answer).
+    m_replaying = true;
+    if (!before.isEmpty()) take(before);
+    if (!after.isEmpty()) take(after);
+    m_replaying = false;
+    if (request.status)
+        emit statusPolled(request.bytes.at(0), value);
+    else
+        emit pollAnswered(request.id, request.bytes.at(0), value);
+    pump();
 }
 
 void Pmc960Session::noteTyped(const QByteArray& bytes) {
     static const QByteArray kEnds("\r?!&\x1b");
     for (const char c : bytes) {
+        if (c == '%') m_typedStream = true;
         if (kEnds.contains(c)) {
             m_typedSettle.stop();
             ++m_typedPrompts;
@@ -278,6 +375,13 @@ void Pmc960Session::noteTyped(const QByteArray& bytes) {
             m_typedPartial = true;
         }
     }
+}
+
+// The user's commands are done (their prompts came, or are forgotten): the next one starts afresh.
+void Pmc960Session::typedLineClosed() {
+    if (typedLineOpen()) return;
+    m_typedStream = false;
+    m_cutInUnanswered = false;
 }
 
 Pmc960Response Pmc960Session::parse(const Request& request) const {
@@ -324,16 +428,7 @@ void Pmc960Session::complete() {
         emit finished(request.id, response);
         break;
     }
-    case Kind::Poll: {
-        const int cr = int(m_buffer.indexOf('\r'));
-        const QString value = QString::fromLatin1(m_buffer.left(cr));
-        m_buffer.remove(0, cr + 1);
-        if (request.status)
-            emit statusPolled(request.bytes.at(0), value);
-        else
-            emit pollAnswered(request.id, request.bytes.at(0), value);
-        break;
-    }
+    case Kind::Poll: break; // answered in finishPoll()
     case Kind::Expect: {
         Pmc960Response response;
         response.command = request.bytes;
@@ -368,11 +463,30 @@ void Pmc960Session::onTimeout() {
     if (!m_current) return;
     const int waitedMs = timeoutMsFor(*m_current);
     const quint64 id = m_current->id;
+    if (m_current->cutIn) return pollUnanswered();
     m_current.reset();
     setState(State::WaitingForPrompt); // ask for a prompt until one comes
     askForPrompt();
     m_wake.start();
     emit failed(id, QStringLiteral("no answer within %1 ms").arg(waitedMs));
+}
+
+// A poll that cut into a running typed command went unanswered. No CR asks for a prompt (it would wait in the
+// controller's input and be read as an empty command once the routine ends): the line stays the user's, what
+// came meanwhile is the controller's own, and no other poll cuts into this command.
+void Pmc960Session::pollUnanswered() {
+    const Request request = *std::exchange(m_current, std::nullopt);
+    m_pollSettle.stop();
+    m_cutInUnanswered = true;
+    const QByteArray meanwhile = m_buffer.mid(m_pollFrom);
+    m_buffer.truncate(m_pollFrom);
+    m_replaying = true;
+    if (!meanwhile.isEmpty()) take(meanwhile);
+    m_replaying = false;
+    emit failed(request.id, QStringLiteral("no answer within %1 ms while the typed command ran; polls wait for its "
+                                           "prompt")
+                                .arg(timeoutMsFor(request)));
+    pump();
 }
 
 } // namespace serialport

@@ -20,7 +20,13 @@ void SimulatorLink::open() {
     m_worker = new SimulatorWorker(m_family, m_options);
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-    connect(m_worker, &SimulatorWorker::transmitted, this, &Link::bytesReceived);
+    // What the worker sent before close() stopped it may still wait in this thread's event queue: a closed
+    // link (or one reopened since, with a new worker) delivers none of it, as a closed port reads nothing.
+    // Passed on, the BDS5's last answer reached the terminal after the switch to another family (" RAMP").
+    connect(m_worker, &SimulatorWorker::transmitted, this,
+            [this, generation = ++m_generation](const QByteArray& bytes) {
+                if (m_open && generation == m_generation) emit bytesReceived(bytes);
+            });
     connect(m_worker, &SimulatorWorker::statusChanged, this, [this](const drive_core::SimulatorStatus& status) {
         m_status = status;
         emit simulatorStatus(status);

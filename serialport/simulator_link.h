@@ -61,6 +61,7 @@ private:
     QThread m_thread;
     SimulatorWorker* m_worker = nullptr; // lives in m_thread; deleted when the thread finishes
     bool m_open = false;
+    quint64 m_generation = 0; // one per open(): bytes of an earlier worker are not this opening's
     drive_core::SimulatorStatus m_status;
 };
 

@@ -21,6 +21,10 @@ QStringList linesOf(const QsciScintilla& editor) {
 DebugHighlighter::DebugHighlighter(MainWindow& window, QObject* parent) : QObject(parent), m_window(window) {
     connect(&window.connection(), &DriveConnection::rawReceived, this, &DebugHighlighter::feed);
     connect(&window.connection(), &DriveConnection::linkChanged, this, &DebugHighlighter::reset);
+    // The step mark is the BDS5 session's: another family's workspace may show the same editor next.
+    connect(&window, &MainWindow::familyChanged, this, [this](drive_core::DriveFamily family) {
+        if (family != drive_core::DriveFamily::Bds5) reset();
+    });
 }
 
 void DebugHighlighter::setColour(const QColor& colour) {

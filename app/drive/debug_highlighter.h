@@ -1,6 +1,7 @@
 // DebugHighlighter: while the drive single-steps or traces, marks in the current editor the line about to
 // run — mapped from the text the drive shows before its s--> prompt or after t... — and clears the mark
-// when the drive is back at its interactive prompt. Asks MainWindow for the editor each time (tabs).
+// when the drive is back at its interactive prompt, or another family is chosen. Asks MainWindow for the
+// editor each time (tabs).
 #pragma once
 
 #include "step_trace_parser.h"

@@ -3,10 +3,12 @@
 
 #include "drive_connection.h"
 #include "main_window.h"
+#include "run_label_dialog.h"
 #include "terminal_widget.h"
 
+#include "editor/program_editor.h"
+
 #include <QAction>
-#include <QInputDialog>
 #include <QMenu>
 #include <QStyle>
 #include <QToolBar>
@@ -120,21 +122,12 @@ QToolBar* DriveActions::createDebugToolBar() {
     return bar;
 }
 
-QInputDialog* DriveActions::askRunLabel() {
-    auto* dialog = new QInputDialog(&m_window);
+RunLabelDialog* DriveActions::askRunLabel() {
+    // The labels of the program in the editor; the drive itself reports a label it lacks (ERR 70).
+    const editor::ProgramEditor* program = m_window.editor();
+    auto* dialog = new RunLabelDialog(RunLabelDialog::labelsIn(program ? program->text() : QString()), &m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setObjectName(QStringLiteral("runLabelDialog"));
-    dialog->setWindowTitle(tr("Run Label"));
-    dialog->setLabelText(tr("Label number to RUN (empty: RUN alone, which starts multitasking only):"));
-    dialog->setInputMode(QInputDialog::TextInput);
-    // chosen: the BDS5 numbers labels 0-255 (L3687); the drive itself reports a label it lacks (ERR 70).
-    connect(dialog, &QInputDialog::textValueSelected, this, [this](const QString& text) {
-        const QString label = text.trimmed().remove(QLatin1Char('$'));
-        bool ok = false;
-        const int n = label.toInt(&ok);
-        if (label.isEmpty()) run(-1);
-        else if (ok && n >= 0) run(n);
-    });
+    connect(dialog, &RunLabelDialog::runRequested, this, &DriveActions::run);
     dialog->open();
     return dialog;
 }

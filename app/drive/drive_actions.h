@@ -11,7 +11,6 @@
 #include <QSet>
 
 class QAction;
-class QInputDialog;
 class QMenu;
 class QToolBar;
 class QWidget;
@@ -19,6 +18,7 @@ class QWidget;
 namespace app {
 
 class MainWindow;
+class RunLabelDialog;
 
 class DriveActions final : public QObject {
     Q_OBJECT
@@ -43,8 +43,9 @@ public:
     QAction* stepAction() const { return m_step; }
     QAction* continueAction() const { return m_continue; }
 
-    // Drive > Run label...: asks for the label without blocking; returns the open dialog.
-    QInputDialog* askRunLabel();
+    // Drive > Run label...: offers the labels of the program in the current editor (any other number can be
+    // typed) without blocking; returns the open dialog.
+    RunLabelDialog* askRunLabel();
     // RUN [label] as typed at the prompt (label < 0: RUN alone).
     void run(int label);
 

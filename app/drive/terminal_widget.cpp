@@ -17,6 +17,7 @@ const QColor kBackground(0xfb, 0xfb, 0xf7);
 const QColor kForeground(0x1c, 0x1c, 0x1c);
 const QColor kBellFlash(0xff, 0xe4, 0xa8);
 const QColor kNotice(0x7a, 0x7a, 0x86);
+const QColor kFolded(0x3a, 0x5a, 0x8c);
 constexpr int kBellFlashMs = 150;
 constexpr int kFontPointSize = 11;
 
@@ -43,6 +44,17 @@ TerminalWidget::TerminalWidget(QWidget* parent) : QPlainTextEdit(parent) {
     document()->setDocumentMargin(6);
     m_cursor = QTextCursor(document());
     m_cursor.movePosition(QTextCursor::End);
+
+    // Following the end is the user's choice, read from their own scrolling only (wheel, scroll bar, keys):
+    // a hidden or resized terminal changes the scroll range and the position with it, which says nothing
+    // about whether the user wants to see the newest line.
+    QScrollBar* bar = verticalScrollBar();
+    connect(bar, &QAbstractSlider::actionTriggered, this,
+            [this, bar] { m_following = bar->sliderPosition() >= bar->maximum(); });
+    connect(bar, &QAbstractSlider::rangeChanged, this, &TerminalWidget::followEnd);
+    m_followLater.setSingleShot(true);
+    m_followLater.setInterval(0);
+    connect(&m_followLater, &QTimer::timeout, this, &TerminalWidget::followEnd);
 }
 
 void TerminalWidget::setColours(const QColor& background, const QColor& foreground) {
@@ -54,8 +66,12 @@ void TerminalWidget::setColours(const QColor& background, const QColor& foregrou
 }
 
 void TerminalWidget::displayBytes(const QByteArray& bytes) {
+    render(m_fold ? m_fold->filter(bytes) : bytes);
+}
+
+void TerminalWidget::render(const QByteArray& bytes) {
+    if (bytes.isEmpty()) return;
     QScrollBar* bar = verticalScrollBar();
-    const bool followTail = bar->value() >= bar->maximum() - 1;
     const int scrolledTo = bar->value();
     QString run;
     m_cursor.beginEditBlock();
@@ -85,19 +101,59 @@ void TerminalWidget::displayBytes(const QByteArray& bytes) {
     }
     if (!run.isEmpty()) writePrintable(run);
     m_cursor.endEditBlock();
-    showWriteCursor();
-    bar->setValue(followTail ? bar->maximum() : scrolledTo);
+    showWriteCursor(); // moves the view to the caret: put it back where the user had scrolled to
+    bar->setValue(m_following ? bar->maximum() : scrolledTo);
 }
 
 void TerminalWidget::displayNotice(const QString& message) {
-    if (m_cursor.block().length() > 1) newLine();
     QTextCharFormat format;
     format.setForeground(kNotice);
     format.setFontItalic(true);
-    m_cursor.insertText(QStringLiteral("[%1]").arg(message), format);
+    m_following = true; // a notice (link lost, a transfer's result) is shown even to a user scrolled up
+    writeOwnLine(QStringLiteral("[%1]").arg(message), format);
+}
+
+int TerminalWidget::beginFold(TerminalFold::Hide hide) {
+    if (m_fold) endFold(m_foldNumber, QString()); // one answer at a time: what the last fold held is shown
+    m_fold.emplace(std::move(hide));
+    return ++m_foldNumber;
+}
+
+void TerminalWidget::endFold(int fold, const QString& summary) {
+    if (!m_fold || fold != m_foldNumber) return;
+    const QByteArray held = m_fold->takeHeld();
+    m_fold.reset();
+    if (!summary.isEmpty()) {
+        QTextCharFormat format;
+        format.setForeground(kFolded);
+        writeOwnLine(summary, format);
+    }
+    render(held);
+}
+
+void TerminalWidget::writeOwnLine(const QString& text, const QTextCharFormat& format) {
+    QScrollBar* bar = verticalScrollBar();
+    const int scrolledTo = bar->value();
+    if (m_cursor.block().length() > 1) newLine();
+    m_cursor.insertText(text, format);
     newLine();
     showWriteCursor();
-    verticalScrollBar()->setValue(verticalScrollBar()->maximum());
+    bar->setValue(m_following ? bar->maximum() : scrolledTo);
+}
+
+void TerminalWidget::followEnd() {
+    if (m_following) verticalScrollBar()->setValue(verticalScrollBar()->maximum());
+}
+
+void TerminalWidget::showEvent(QShowEvent* event) {
+    QPlainTextEdit::showEvent(event);
+    // While hidden the view cannot know its height; once shown (and the dock has laid out), the end.
+    if (m_following) m_followLater.start();
+}
+
+void TerminalWidget::resizeEvent(QResizeEvent* event) {
+    QPlainTextEdit::resizeEvent(event);
+    if (m_following) m_followLater.start(); // rewrapped lines settle after the resize
 }
 
 void TerminalWidget::writePrintable(const QString& run) {
@@ -204,7 +260,10 @@ void TerminalWidget::keyPressEvent(QKeyEvent* event) {
     }
     const QByteArray bytes = bytesForKey(event);
     if (bytes.isEmpty()) {
+        QScrollBar* bar = verticalScrollBar();
+        const int before = bar->value();
         QPlainTextEdit::keyPressEvent(event); // scrolling, copy, select all
+        if (bar->value() != before) m_following = bar->value() >= bar->maximum(); // Page Up, Ctrl+End ...
         return;
     }
     event->accept();
@@ -212,6 +271,7 @@ void TerminalWidget::keyPressEvent(QKeyEvent* event) {
 }
 
 void TerminalWidget::send(const QByteArray& bytes) {
+    m_following = true; // what the user types goes to the newest line: show it
     // Follow the line as the drive will have it, so history can replace it with backspaces.
     for (const char byte : bytes) {
         switch (byte) {
@@ -268,6 +328,7 @@ void TerminalWidget::contextMenuEvent(QContextMenuEvent* event) {
     menu->addAction(tr("C&lear"), this, [this] {
         clear();
         m_cursor = QTextCursor(document());
+        m_following = true;
     });
     menu->popup(event->globalPos());
 }

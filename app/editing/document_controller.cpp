@@ -51,6 +51,7 @@ bool DocumentController::openFile(const QString& path) {
     if (const int index = m_tabs.indexOfFile(path); index >= 0) {
         m_tabs.setCurrentIndex(index);
         m_recent.add(path);
+        emit fileOpenedAgain(m_tabs.editorAt(index)); // the disk's content, or a question when it has edits
         return true;
     }
     editor::ProgramEditor* editor = m_tabs.addEditor(QFileInfo(path).fileName());
@@ -63,6 +64,7 @@ bool DocumentController::openFile(const QString& path) {
     m_tabs.refreshTab(editor);
     m_recent.add(path);
     rememberDirectory(path);
+    emit fileLoaded(editor, path);
     emit documentChanged();
     emit statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
     return true;

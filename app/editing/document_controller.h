@@ -63,6 +63,9 @@ signals:
     void documentChanged(); // a different document (or name) is in the current tab
     void statusMessage(const QString& message);
     void fileSaved(editor::ProgramEditor* editor, const QString& path);
+    void fileLoaded(editor::ProgramEditor* editor, const QString& path); // opened from disk into a new tab
+    // File > Open (or Open Recent) named a file already open in editor; its tab is current now.
+    void fileOpenedAgain(editor::ProgramEditor* editor);
 
 private:
     void askEach(QList<QPointer<editor::ProgramEditor>> remaining, std::function<void()> proceed);

@@ -2,6 +2,8 @@
 #include "editor_area.h"
 
 #include "autosaver.h"
+#include "disk_change_bar.h"
+#include "disk_watcher.h"
 #include "document_controller.h"
 #include "editor_actions.h"
 #include "editor_tabs.h"
@@ -45,6 +47,8 @@ EditorArea::EditorArea(QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
     layout->addWidget(m_recoveryBar);
+    m_diskBar = new DiskChangeBar(this);
+    layout->addWidget(m_diskBar);
     layout->addWidget(m_tabs, 1);
     layout->addWidget(m_findBar);
 
@@ -63,13 +67,20 @@ EditorArea::EditorArea(QWidget* parent)
             [this](const QString& keys) { emit statusMessage(tr("%1 is not an editor command").arg(keys)); });
     connect(m_recoveryBar, &RecoveryBar::restoreRequested, this, &EditorArea::restoreRecovered);
     connect(m_recoveryBar, &RecoveryBar::discardRequested, this, &EditorArea::discardRecovered);
+    m_diskWatcher = new DiskWatcher(*m_tabs, *m_diskBar, this);
+    connect(m_documents, &DocumentController::fileLoaded, m_diskWatcher, &DiskWatcher::track);
+    connect(m_documents, &DocumentController::fileSaved, m_diskWatcher, &DiskWatcher::track);
+    connect(m_documents, &DocumentController::fileOpenedAgain, m_diskWatcher, &DiskWatcher::reopened);
+    connect(m_diskWatcher, &DiskWatcher::statusMessage, this, &EditorArea::statusMessage);
 
     m_recent->fillMenu(m_recentMenu);
     reloadKeymap();
     m_recoveryBar->offer(m_store->orphans());
 }
 
-EditorArea::~EditorArea() = default;
+EditorArea::~EditorArea() {
+    delete m_diskWatcher; // before the tabs, whose editors it follows, go
+}
 
 editor::ProgramEditor* EditorArea::currentEditor() const {
     return m_tabs->currentEditor();
@@ -159,6 +170,7 @@ int EditorArea::restoreRecovered() {
         e->setText(buffer.text);
         e->setModified(true);
         m_tabs->refreshTab(e);
+        m_diskWatcher->track(e); // a file changed on disk from now on asks before the restored text goes
     }
     m_autosaver->flush(); // the restored text is this session's to protect now
     m_store->discardOrphans();

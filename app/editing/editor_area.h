@@ -1,5 +1,6 @@
-// EditorArea: the IDE's centre — the crash-recovery bar, the editor tabs and the find bar — with the
-// document, recent-file, autosave and editor-command machinery behind them, and the keymap in use.
+// EditorArea: the IDE's centre — the crash-recovery bar, the bar asking about files changed on disk, the
+// editor tabs and the find bar — with the document, recent-file, disk-watch, autosave and editor-command
+// machinery behind them, and the keymap in use.
 // MainWindow puts it in the middle and asks it for menus and status-bar cells. GUI thread only.
 #pragma once
 
@@ -26,6 +27,8 @@ class ProgramEditor;
 namespace app {
 
 class Autosaver;
+class DiskChangeBar;
+class DiskWatcher;
 class DocumentController;
 class EditorActions;
 class EditorTabs;
@@ -45,6 +48,9 @@ public:
     EditorActions* actions() const { return m_actions; }
     editor::FindBar* findBar() const { return m_findBar; }
     RecoveryBar* recoveryBar() const { return m_recoveryBar; }
+    // Files changed on disk by other programs: reloaded, or asked about in the bar over the tabs.
+    DiskWatcher* diskWatcher() const { return m_diskWatcher; }
+    DiskChangeBar* diskChangeBar() const { return m_diskBar; }
     RecentFiles* recentFiles() const { return m_recent; }
     Autosaver* autosaver() const { return m_autosaver.get(); }
     RecoveryStore& recoveryStore() const { return *m_store; }
@@ -99,6 +105,8 @@ private:
     QMenu* m_recentMenu;
     std::unique_ptr<Autosaver> m_autosaver; // after m_store: it removes the session when destroyed
     editor::EditorSize m_size;              // of the current tab, refreshed on each edit
+    DiskChangeBar* m_diskBar = nullptr;
+    DiskWatcher* m_diskWatcher = nullptr; // deleted first: it follows the tabs' editors as they go
     QLabel* m_sizeLabel = nullptr;
     QLabel* m_keysLabel = nullptr;
     QMetaObject::Connection m_cursorConnection;

@@ -2,8 +2,17 @@
 #include "pmc960_error_source.h"
 
 #include "pmc960_error_text.h"
+#include "program_line_jump.h"
 
+#include "pmc960/pmc960_program_transfer.h"
+#include "pmc960/pmc960_routine_runner.h"
 #include "pmc960/pmc960_workspace.h"
+
+#include "editor_area.h"
+#include "editor_tabs.h"
+#include "main_window.h"
+
+#include "editor/program_editor.h"
 
 #include <utility>
 
@@ -50,7 +59,11 @@ void Pmc960ErrorSource::follow() {
         if (m_shown.size() > kMaxShown) m_shown.remove(0, m_shown.size() - kMaxShown);
     });
     connect(session, &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
-        model().addReported(Pmc960ErrorText::entry(code, typedCommand()), QDateTime::currentDateTime());
+        const QString command = typedCommand();
+        // The error that stopped a routine typed as B<label> is not B's: the runner places it in the program
+        // (SB&) and its row comes from there (addProgramError).
+        if (m_workspace.runner().isProgramError(code)) return;
+        model().addReported(Pmc960ErrorText::entry(code, command), QDateTime::currentDateTime());
     });
 }
 
@@ -71,6 +84,23 @@ QString Pmc960ErrorSource::typedCommand() {
     const QByteArray line = shown.left(hash);
     const QString command = QString::fromLatin1(line.mid(line.lastIndexOf('}') + 1)).simplified();
     return command.size() > kMaxDetail ? command.left(kMaxDetail) + QStringLiteral("...") : command;
+}
+
+void Pmc960ErrorSource::addProgramError(const Pmc960ProgramStop& stop) {
+    ErrorLogModel::Entry row = Pmc960ErrorText::entry(stop.code, stop.detail);
+    row.programLine = stop.editorLine;
+    model().addReported(row, QDateTime::currentDateTime());
+}
+
+// A program error's line is the downloaded program's: its editor if still open, else the current one.
+bool Pmc960ErrorSource::showLine(const ErrorLogModel::Entry& entry) {
+    editor::ProgramEditor* editor = m_workspace.transfer().downloadedEditor();
+    if (editor)
+        m_workspace.window().editorArea()->tabs()->setCurrentWidget(editor);
+    else
+        editor = m_workspace.window().editor();
+    if (editor) ProgramLineJump::showEditorLine(*editor, entry.programLine);
+    return true;
 }
 
 void Pmc960ErrorSource::read() {

@@ -1,8 +1,9 @@
 // Pmc960ErrorSource: the PMC-960's error log (issue 9) — every #xx the controller answers a command with
 // (the IDE's own requests and what the user types in the Terminal) and the asynchronous #E0-#E3, decoded
-// from the catalog; the dock's Read button ("Read Last Error") reads the controller's error-status buffer
-// (SE& G& V& SM& SB&, digest §4.5, L837-L839): the last error with where the axis was when it happened.
-// Talks only through the workspace's session.
+// from the catalog; an error that stops a routine run with MPL > Run Routine names the command in the program
+// and its line, as the runner placed it (issue 19; a double-click shows the line). The dock's Read button
+// ("Read Last Error") reads the controller's error-status buffer (SE& G& V& SM& SB&, digest §4.5, L837-L839):
+// the last error with where the axis was when it happened. Talks only through the workspace's session.
 //
 // The dock's buttons for this family: the controller keeps only its last error (no history list, nothing
 // to clear), so Read fills the log's one "history" row from the `&` snapshot and Clear empties the log.
@@ -18,6 +19,7 @@
 namespace app {
 
 class Pmc960Workspace;
+struct Pmc960ProgramStop;
 
 class Pmc960ErrorSource final : public ErrorSource {
     Q_OBJECT
@@ -29,6 +31,10 @@ public:
     QString clearToolTip() const override;
     void read() override;
     void clear() override;
+    bool showLine(const ErrorLogModel::Entry& entry) override;
+
+    // A routine stopped on an error inside its program (Pmc960RoutineRunner::programFailed).
+    void addProgramError(const Pmc960ProgramStop& stop);
 
 private:
     void follow();

@@ -63,6 +63,7 @@ void Pmc960ProgramTransfer::report(const QString& message, bool error) {
 
 void Pmc960ProgramTransfer::download(editor::ProgramEditor* editor) {
     if (!editor || !canStart()) return;
+    forgetProgram(); // P{} erases the buffer first: until the checksum says so, nothing is known to be in it
     const QString text = editor->text();
     auto* job = new serialport::Pmc960Download(*m_workspace.session(), text, this);
     m_download = job;
@@ -99,6 +100,8 @@ void Pmc960ProgramTransfer::finishDownload(const serialport::Pmc960DownloadResul
     }
     int line = 0;
     if (result.ok) {
+        m_downloaded = text;
+        m_downloadedEditor = editor;
         report(tr("Downloaded %n line(s) to the PMC-960; checksum 0x%1 verified.", nullptr, linesSent)
                    .arg(result.driveChecksum, 4, 16, QLatin1Char('0')),
                false);
@@ -115,6 +118,15 @@ void Pmc960ProgramTransfer::finishDownload(const serialport::Pmc960DownloadResul
     }
     setBusy(false);
     emit downloadFinished(result, line);
+}
+
+editor::ProgramEditor* Pmc960ProgramTransfer::downloadedEditor() const {
+    return m_downloadedEditor;
+}
+
+void Pmc960ProgramTransfer::forgetProgram() {
+    m_downloaded.clear();
+    m_downloadedEditor.clear();
 }
 
 void Pmc960ProgramTransfer::cancelDownload() {

@@ -35,6 +35,12 @@ public:
     QString lastMessage() const { return m_lastMessage; }
     // The progress dialog of the running download (the tour grabs it), else nullptr.
     QProgressDialog* progressDialog() const { return m_progress; }
+    // The program the controller holds as far as this connection knows: the text of the last download its
+    // checksum verified, and the editor it came from (which may have been edited or closed since). Null before
+    // one, once another starts (P{} erases the buffer), and after forgetProgram() (a new connection).
+    QString downloadedProgram() const { return m_downloaded; }
+    editor::ProgramEditor* downloadedEditor() const;
+    void forgetProgram();
 
     // "#C1 Program buffer full: <the manual's meaning>" for a controller error code.
     static QString describeError(int code);
@@ -58,6 +64,8 @@ private:
     QPointer<QProgressDialog> m_progress;
     QPointer<serialport::Pmc960Download> m_download;
     QString m_lastMessage;
+    QString m_downloaded;
+    QPointer<editor::ProgramEditor> m_downloadedEditor;
     bool m_busy = false;
 };
 

@@ -1,7 +1,8 @@
 // Pmc960StatusDock: the PMC-960's status panel — servo mode, position, following error, velocity,
 // distance to go and last label, the inputs IN07'-IN00' and outputs OUT07-OUT00 as round lights, and a
 // command line. Fed by the session's out-of-band status polls (<attn> g f v i s b, digest §4.7), which
-// never disturb command traffic; mode and outputs are read with SM! and OB! only while the line is idle.
+// never disturb command traffic and go on while a routine runs (issue 19); mode and outputs are read with SM!
+// and OB! only while the line is idle.
 // Paused while a program transfer runs. GUI thread only.
 #pragma once
 

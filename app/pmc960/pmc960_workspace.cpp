@@ -54,6 +54,7 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     m_menu->addAction(tr("&Watch Variables..."), this, &Pmc960Workspace::watchVariables)
         ->setStatusTip(tr("A rolling chart of position, following error, velocity and distance to go"));
 
+    connect(m_runner, &Pmc960RoutineRunner::programFailed, m_errors, &Pmc960ErrorSource::addProgramError);
     connect(m_transfer, &Pmc960ProgramTransfer::busyChanged, this, [this](bool busy) {
         m_status->setPaused(busy);
         m_parameters->setPaused(busy);
@@ -136,8 +137,12 @@ bool Pmc960Workspace::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
         emit message(tr("The PMC-960 is not connected (Drive > Connect): nothing was sent."));
         return true;
     }
-    if (urgent && bytes == "\x1b") stop();
-    else m_session->sendTyped(bytes);
+    if (urgent && bytes == "\x1b") {
+        stop();
+    } else {
+        m_runner->noteTyped(bytes); // a B<label> typed here is followed as MPL > Run Routine's
+        m_session->sendTyped(bytes);
+    }
     return true;
 }
 
@@ -173,6 +178,7 @@ void Pmc960Workspace::deactivate() {
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
     m_runner->reset();
+    m_transfer->forgetProgram(); // another connection may reach another controller
     if (m_session) m_session->disconnect(this);
     if (m_link) {
         m_link->disconnect(this);

@@ -193,18 +193,30 @@ void Sc750Debugger::reset() {
 }
 
 void Sc750Debugger::adoptDriveStatus(const QString& payload) {
+    // "S<state>,<line>,<faultcode>,<dp>,<configured>" (PROTOCOL.md): line is the current (next) line.
+    const int line = payload.section(QLatin1Char(','), 1, 1).toInt();
     switch (payload.isEmpty() ? 'N' : payload.at(0).toLatin1()) {
     case 'L': setState(State::Loaded); break;
     case 'R': setState(State::Running); break;
-    case 'S': setState(State::Stopped); break;
-    case 'B': setState(State::AtBreakpoint); break;
+    case 'S':
+        setState(State::Stopped);
+        markLine(line);
+        break;
+    case 'B':
+        setState(State::AtBreakpoint);
+        markLine(line);
+        break;
     case 'E': setState(State::Ended); break;
-    case 'F': setState(State::Faulted); break;
+    case 'F':
+        setState(State::Faulted);
+        markLine(line);
+        break;
     default: setState(State::NoProgram); break;
     }
 }
 
 void Sc750Debugger::attachSession() {
+    markLine(0); // stopped where the old session said: not known of this one until its status answers
     serialport::Sc750Session* session = m_workspace.session();
     if (session) session->disconnect(this); // the same session again after a reconnect: connected once
     if (!session) {
@@ -215,20 +227,24 @@ void Sc750Debugger::attachSession() {
         setState(State::AtBreakpoint);
         markLine(line);
         emit message(tr("Breakpoint at line %1").arg(line));
+        emit halted();
     });
     connect(session, &serialport::Sc750Session::programStopped, this, [this](int line) {
         if (m_state == State::Downloading) return; // the H sent before a download
         setState(State::Stopped);
         markLine(line);
+        emit halted();
     });
     connect(session, &serialport::Sc750Session::programEnded, this, [this](int) {
         setState(State::Ended);
         markLine(0);
+        emit halted();
     });
     connect(session, &serialport::Sc750Session::runTimeError, this, [this](int code, int line, const QString& text) {
         setState(State::Faulted);
         markLine(line);
         emit message(tr("Run-time error %1 at line %2: %3").arg(code).arg(line).arg(text));
+        emit halted();
     });
 }
 

@@ -65,9 +65,10 @@ public:
     editor::ProgramEditor* programEditor() const;
 
     // The drive's own state from a status answer ("R,12,0,1,1"): on connecting, a program may be running
-    // already (AUTOSTART, L2814-L2829) and only Stop regains control.
+    // already (AUTOSTART, L2814-L2829) and only Stop regains control; one stopped shows its line again.
     void adoptDriveStatus(const QString& payload);
-    // The session was created or dropped: wire its events.
+    // The session was created or dropped: wire its events. The current-line marks go with the old session
+    // (another family's workspace may show the same editor next); the drive's status puts them back.
     void attachSession();
     // Prepares an editor's margin for breakpoints and the current-line marks (once per editor).
     void prepareEditor(editor::ProgramEditor& editor);
@@ -76,6 +77,9 @@ signals:
     void stateChanged();
     void message(const QString& text);
     void runStarted(); // the program was downloaded and R answered: the output window opens
+    // The program stopped where its values can be read as they stand: a breakpoint, Stop or STOP, END, a
+    // run-time error. The Variables window reads its watched names again.
+    void halted();
     // Compile Program found an error (1-based line and column), for the error log.
     void compileFailed(int line, int column, const QString& message);
 

@@ -74,6 +74,8 @@ Sc750VariablesDock::Sc750VariablesDock(Sc750Workspace& workspace, QWidget* paren
         writeVariable(m_table->item(item->row(), 0)->text(), item->text());
     });
     connect(&workspace.debugger(), &Sc750Debugger::stateChanged, this, &Sc750VariablesDock::updateCompletions);
+    // Stopped at a breakpoint (or by Stop, STOP, END, an error): the watched values are read as they now stand.
+    connect(&workspace.debugger(), &Sc750Debugger::halted, this, &Sc750VariablesDock::refresh);
     updateCompletions();
 }
 

@@ -1,6 +1,7 @@
 // Sc750VariablesDock: Motion Dialogue's Variables window (L2746-L2786) as a dock: type a name (a program
 // variable, "A(3)", or a predefined variable/parameter) and Enter reads it into the list; editing a value
-// writes it, which the controller allows only while no program executes; Refresh reads every row again.
+// writes it, which the controller allows only while no program executes; Refresh reads every row again, as
+// does the program stopping (at a breakpoint, by Stop, at its end or an error).
 // Its second tab is the variable browser of every predefined variable (Sc750VariableBrowser).
 // GUI thread only.
 #pragma once

@@ -27,7 +27,10 @@ MeasurementsTable::MeasurementsTable(QWidget* parent) : QTableWidget(parent) {
     setColumnCount(int(kColumns.size()));
     setHorizontalHeaderLabels(kColumns);
     verticalHeader()->hide();
-    horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    // Each column as wide as its header and values; a narrow dock scrolls rather than clip "Overshoot %"
+    // to "ershoot" (issue 19, item 11).
+    horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    horizontalHeader()->setStretchLastSection(true);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setAlternatingRowColors(true);

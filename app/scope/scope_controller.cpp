@@ -5,6 +5,8 @@
 #include "capture_table_model.h"
 #include "drive_connection.h"
 #include "main_window.h"
+#include "move_watch.h"
+#include "play_terminal_fold.h"
 #include "record_dialog.h"
 #include "scope_catalog.h"
 #include "scope_view.h"
@@ -72,13 +74,15 @@ ScopeController::ScopeController(MainWindow& window)
     m_menu->addAction(tr("&Frequency Response..."), this, &ScopeController::frequencyResponse);
     m_menu->addAction(tr("&Watch Variables..."), this, &ScopeController::watchVariables);
     m_menu->addSeparator();
-    m_menu->addAction(m_scopeDock->toggleViewAction());
-    QAction* tuning = m_tuningDock->toggleViewAction();
-    tuning->setText(tr("&Tuning Panel"));
-    m_menu->addAction(tuning);
+    m_menu->addAction(openingAction(m_scopeDock, tr("Sc&ope")));
+    m_menu->addAction(openingAction(m_tuningDock, tr("&Tuning Panel")));
     connect(this, &ScopeController::captureShown, this, &ScopeController::keepForBode);
     connect(&m_tuning->runner(), &TuningRunner::runFinished, this,
             [this](const TuningRun& run) { keepForBode(run.capture); });
+    // Each run's PLAY listing would put 250-300 lines in the terminal: one line stands for them.
+    connect(&m_tuning->runner(), &TuningRunner::recordStarted, this, [this](serialport::Bds5RecordPlay* record) {
+        new PlayTerminalFold(*record, *m_window.terminal(), tr("Tuning panel"));
+    });
 }
 
 void ScopeController::keepForBode(const scope::Capture& capture) {
@@ -120,31 +124,63 @@ void ScopeController::fromDrive() {
 void ScopeController::record(const serialport::Bds5RecordPlan& plan) {
     if (!TransferReporter::canStart(m_window)) return;
     auto* transfer = new serialport::Bds5RecordPlay(*m_window.connection().session(), plan);
+    auto* watch = new MoveWatch(*m_window.connection().session(), *transfer); // a refused or faulted move stops it
     new TransferDialog(tr("Scope From Drive"), transfer, &m_window);
-    connect(transfer, &serialport::Bds5Transfer::finished, this, [this](const serialport::Bds5TransferResult& r) {
-        status(r.summary);
-        if (r.ok()) {
-            const auto parsed = scope::parsePlay(toStd(r.lines), unitOf);
-            if (!parsed.capture) {
-                status(tr("PLAY could not be read: %1").arg(QString::fromStdString(parsed.error)));
-            } else {
-                scope::Capture capture = *parsed.capture;
-                capture.title = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")).toStdString();
-                show(capture);
-            }
-        }
-        emit recordFinished(r);
-    });
+    new PlayTerminalFold(*transfer, *m_window.terminal(), tr("Scope")); // the samples, not 250 lines of them
+    connect(transfer, &serialport::Bds5Transfer::finished, this,
+            [this, watch](const serialport::Bds5TransferResult& r) {
+                // A move the drive refused or cut short is not shown: its samples would look like a response.
+                const serialport::Bds5LineError* refused = r.errors.isEmpty() ? nullptr : &r.errors.first();
+                const QString stopped = !watch->reason().isEmpty() ? watch->summary()
+                                        : refused ? tr("Record stopped: the drive refused %1: %2. Nothing is shown.")
+                                                        .arg(refused->sent, serialport::describeError(refused->error))
+                                                  : QString();
+                status(r.ok() && !stopped.isEmpty() ? stopped : r.summary);
+                if (r.ok() && stopped.isEmpty()) {
+                    const auto parsed = scope::parsePlay(toStd(r.lines), unitOf);
+                    if (!parsed.capture) {
+                        status(tr("PLAY could not be read: %1").arg(QString::fromStdString(parsed.error)));
+                    } else {
+                        scope::Capture capture = *parsed.capture;
+                        capture.title = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")).toStdString();
+                        show(capture);
+                    }
+                }
+                emit recordFinished(r);
+            });
     transfer->start();
 }
 
 // The Scope dock shows tabbed with the terminal (tabified only now: a hidden tab in the terminal's group
 // would take the terminal's size until then).
 void ScopeController::raiseScopeDock() {
-    if (!m_scopeDock->isVisible() && !m_scopeDock->isFloating())
-        m_window.tabifyDockWidget(m_window.terminalDock(), m_scopeDock);
-    m_scopeDock->show();
+    if (!m_scopeDock->isVisible()) raiseInTerminalTabs(m_scopeDock);
     m_scopeDock->raise();
+}
+
+// Opened from the menu, a dock joins the terminal's tabs before it shows, as the Scope does when a capture
+// arrives: shown side by side with the terminal (the dock's own toggle action), the Tuning panel pushed the
+// window 1236 px wide (issue 19, item 10). Not tabbed while hidden: a hidden tab takes the terminal's size.
+QAction* ScopeController::openingAction(QDockWidget* dock, const QString& text) {
+    auto* action = new QAction(text, this);
+    action->setCheckable(true);
+    action->setProperty("opensDock", QVariant::fromValue(static_cast<QObject*>(dock)));
+    connect(action, &QAction::triggered, this, [this, dock](bool shown) {
+        if (shown) raiseInTerminalTabs(dock);
+        else dock->hide();
+    });
+    connect(dock->toggleViewAction(), &QAction::toggled, action, &QAction::setChecked);
+    connect(dock->toggleViewAction(), &QAction::changed, action,
+            [action, dock] { action->setVisible(dock->toggleViewAction()->isVisible()); });
+    return action;
+}
+
+void ScopeController::raiseInTerminalTabs(QDockWidget* dock) {
+    const bool tabbed = m_window.tabifiedDockWidgets(m_window.terminalDock()).contains(dock);
+    if (!dock->isFloating() && !tabbed && m_window.terminalDock()->isVisible())
+        m_window.tabifyDockWidget(m_window.terminalDock(), dock);
+    dock->show();
+    dock->raise();
 }
 
 void ScopeController::show(const scope::Capture& capture) {

@@ -13,6 +13,7 @@
 #include <optional>
 
 class QDialog;
+class QAction;
 class QDockWidget;
 class QMenu;
 
@@ -60,6 +61,8 @@ private:
     void show(const scope::Capture& capture);
     void keepForBode(const scope::Capture& capture);
     void raiseScopeDock();
+    void raiseInTerminalTabs(QDockWidget* dock); // shown as a tab beside the terminal (unless floated)
+    QAction* openingAction(QDockWidget* dock, const QString& text);
     void status(const QString& message);
 
     MainWindow& m_window;

@@ -107,6 +107,20 @@ QStringList TestMove::proposalInputs() {
 // quarter of the hold (the triangle's area), so the move is over within half of it; counts = units * PNUM/PDEN, 4096
 // counts a turn. Its current is set by ACC, not by the distance: lower ACC when the warning still shows.
 namespace {
+double driveValue(const TestMove::DriveValues& drive, const char* name, double powerUp) {
+    const double v = drive.value(QString::fromLatin1(name), powerUp);
+    return v > 0 ? v : powerUp;
+}
+
+// The drive's units (L1521-1560), at their power-up values until read.
+double rpmPerVelocityUnit(const TestMove::DriveValues& drive) {
+    return driveValue(drive, "VNUM", 44739) / driveValue(drive, "VDEN", 10) / 4473.9;
+}
+
+double countsPerPositionUnit(const TestMove::DriveValues& drive) {
+    return driveValue(drive, "PNUM", 1) / driveValue(drive, "PDEN", 1);
+}
+
 // The proposal's figures in SI units, from the drive's values (see above).
 struct Proposal {
     double rpmPerVel = 1, countsPerUnit = 1;
@@ -117,13 +131,10 @@ struct Proposal {
 
 Proposal propose(int durationMs, const TestMove::DriveValues& drive) {
     namespace ls = drive_core::bds5::loop_scaling;
-    const auto value = [&drive](const char* name, double powerUp) {
-        const double v = drive.value(QString::fromLatin1(name), powerUp);
-        return v > 0 ? v : powerUp;
-    };
+    const auto value = [&drive](const char* name, double powerUp) { return driveValue(drive, name, powerUp); };
     Proposal p;
-    p.rpmPerVel = value("VNUM", 44739) / value("VDEN", 10) / 4473.9;
-    p.countsPerUnit = value("PNUM", 1) / value("PDEN", 1);
+    p.rpmPerVel = rpmPerVelocityUnit(drive);
+    p.countsPerUnit = countsPerPositionUnit(drive);
     const double rpmPerSPerAcc = value("ANUM", 4474) / value("ADEN", 1000) / 4.474;
     const double radPerSPerRpm = 2 * std::numbers::pi / 60;
     const double kvPrime = value("KV", 2000) * ls::kKvFractionPerRadPerS;
@@ -157,6 +168,15 @@ int TestMove::proposedAmplitude(Kind kind, int durationMs, const DriveValues& dr
 int TestMove::proposedMoveVelocity(int durationMs, const DriveValues& drive) {
     const Proposal p = propose(durationMs, drive);
     return atLeastOne(p.move_radPerS * 60 / (2 * std::numbers::pi) / p.rpmPerVel);
+}
+
+TestMove::Travel TestMove::travel(const DriveValues& drive) const {
+    const double jog_rps = amplitude * rpmPerVelocityUnit(drive) / 60;
+    const double jog_counts = jog_rps * drive_core::bds5::kCountsPerRev * (durationMs / 1000.0);
+    const double jog_units = jog_counts / countsPerPositionUnit(drive);
+    // A back-and-forth comes back as far as it went; the frequency step's J is held for its whole duration.
+    const double reach_units = kind == Kind::PositionStep ? double(amplitude) : jog_units;
+    return {std::min(0.0, reach_units), std::max(0.0, reach_units)};
 }
 
 } // namespace app

@@ -34,6 +34,14 @@ struct TestMove {
     // The position step's MI speed that goes with it (velocity units).
     static int proposedMoveVelocity(int durationMs, const DriveValues& drive);
     static constexpr double kIlimShare = 0.5;
+
+    // How far the move takes the motor from where it starts, in position units: lowest <= 0 <= highest. A J of
+    // v held T ms travels v x T (the stop's ramp adds what the start's took); MI n and back reaches n.
+    struct Travel {
+        double lowest_units = 0;
+        double highest_units = 0;
+    };
+    Travel travel(const DriveValues& drive) const;
 };
 
 } // namespace app

@@ -15,6 +15,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
@@ -118,6 +119,7 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
     });
     connect(m_runner, &TuningRunner::runFinished, this, &TuningPanel::addRun);
     connect(m_runner, &TuningRunner::runFailed, this, &TuningPanel::setStatus);
+    connect(m_runner, &TuningRunner::softLimitsInTheWay, this, &TuningPanel::askAboutSoftLimits);
     connect(m_runner, &TuningRunner::message, this, &TuningPanel::setStatus);
     connect(m_runner, &TuningRunner::stateChanged, this, &TuningPanel::updateButtons);
     // The editors show the drive's gains from the start (the read waits in the session's queue).
@@ -183,6 +185,9 @@ QWidget* TuningPanel::buildTestMove() {
         applyTestMove();
     });
     connect(m_duration, &QSpinBox::valueChanged, this, [this] {
+        // The user's new hold: the position step's speed goes with it (the amplitude stays).
+        if (!m_settingFields && !m_runner->driveValues().isEmpty())
+            m_moveVelocity = TestMove::proposedMoveVelocity(m_duration->value(), proposalValues());
         updateProposal();
         applyTestMove();
     });
@@ -247,8 +252,7 @@ void TuningPanel::applyTestMove() {
     move.kind = TestMove::Kind(m_moveKind->currentData().toInt());
     move.amplitude = m_amplitude->value();
     move.durationMs = m_duration->value();
-    if (move.kind == TestMove::Kind::PositionStep && !m_runner->driveValues().isEmpty())
-        move.moveVelocity = TestMove::proposedMoveVelocity(move.durationMs, proposalValues());
+    if (move.kind == TestMove::Kind::PositionStep) move.moveVelocity = m_moveVelocity;
     m_runner->setTestMove(move);
     m_moveKind->setToolTip(move.plan().recordLine() + QStringLiteral(" \u2014 ") + move.description());
 }
@@ -260,6 +264,9 @@ void TuningPanel::setTestMove(const TestMove& move) {
     m_amplitude->setValue(move.amplitude);
     m_duration->setValue(move.durationMs);
     m_settingFields = false;
+    m_moveVelocity = move.moveVelocity > 0 || m_runner->driveValues().isEmpty()
+                         ? move.moveVelocity
+                         : TestMove::proposedMoveVelocity(move.durationMs, proposalValues());
     applyTestMove();
 }
 
@@ -281,15 +288,53 @@ void TuningPanel::useProposedAmplitude() {
     updateProposal();
 }
 
+// The "Proposed:" line follows every gain; the Amplitude field takes the proposal once and keeps it (a gain change
+// re-proposing it made run 1 J 2596, run 2 J 1298, run 3 J 3750: overlays of different moves).
 void TuningPanel::updateProposal() {
     const int proposed = proposedAmplitude();
     const bool known = !m_runner->driveValues().isEmpty();
     m_proposal->setText(known ? tr("Proposed: %1, so that ICMD stays at most about half of ILIM.").arg(proposed)
                               : tr("Proposed amplitude: once the drive's values are read."));
-    if (!known || !m_followProposal || m_amplitude->value() == proposed) return applyTestMove();
-    m_settingFields = true;
-    m_amplitude->setValue(proposed); // applies the move
-    m_settingFields = false;
+    if (known && m_followProposal) {
+        m_followProposal = false;
+        m_moveVelocity = TestMove::proposedMoveVelocity(m_duration->value(), proposalValues());
+        m_settingFields = true;
+        m_amplitude->setValue(proposed);
+        m_settingFields = false;
+    }
+    applyTestMove();
+}
+
+QString TuningPanel::proposalText() const {
+    return m_proposal->text();
+}
+
+QMessageBox* TuningPanel::softLimitsQuestion() const {
+    return m_limitsQuestion;
+}
+
+// Non-modal: the run waits in the runner until the answer (or Stop) comes.
+void TuningPanel::askAboutSoftLimits(const QString& why) {
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Software Travel Limits"),
+                                why + QStringLiteral("\n\n") +
+                                    tr("At power-up PMAX and PMIN are only +-100 counts. Set them for the machine "
+                                       "to keep the limits on, or turn the limits off for this test: ServoDesk "
+                                       "sends PLIM=0 before the run and PLIM=1 once it is over."),
+                                QMessageBox::Cancel, &m_window);
+    box->setObjectName(QStringLiteral("softLimitsQuestion"));
+    QPushButton* off = box->addButton(tr("Turn off the soft limits (PLIM=0) for the test"), QMessageBox::AcceptRole);
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    m_limitsQuestion = box;
+    connect(box, &QMessageBox::finished, this, [this, box, off](int) {
+        if (!m_runner->isWaitingForAnswer()) return; // stopped meanwhile
+        if (box->clickedButton() == off) return m_runner->runWithoutSoftLimits();
+        m_runner->stop();
+        setStatus(tr("Not run: the test move would pass the software travel limits. Set PMAX and PMIN for the "
+                     "machine, or run again and turn the limits off for the test."));
+    });
+    setStatus(tr("Waiting: the test move would pass the software travel limits (PMAX/PMIN)."));
+    box->open();
 }
 
 QString TuningPanel::warningText() const {
@@ -322,13 +367,16 @@ void TuningPanel::addRun(const TuningRun& run) {
     m_warning->setText(tr("ICMD reached ILIM in run %1: the current saturated, so the step shows the current "
                           "limit rather than the loop. Lower the amplitude.")
                            .arg(run.number));
-    setStatus(tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
-                  .arg(run.number)
-                  .arg(run.metrics.overshoot_pct, 0, 'f', 1)
-                  .arg(ms(run.metrics.rise_s), ms(run.metrics.settling_s)));
+    QString status = tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
+                         .arg(run.number)
+                         .arg(run.metrics.overshoot_pct, 0, 'f', 1)
+                         .arg(ms(run.metrics.rise_s), ms(run.metrics.settling_s));
+    if (run.softLimitsOff) status += tr(" The soft limits were off for it (PLIM=0); PLIM=1 follows the runs.");
+    setStatus(status);
 }
 
 void TuningPanel::updateButtons() {
+    if (m_limitsQuestion && !m_runner->isWaitingForAnswer()) m_limitsQuestion->close(); // Stop answered it
     m_runOnce->setEnabled(!m_runner->isRunning());
     m_runLoop->setEnabled(!m_runner->isContinuous());
     m_stop->setEnabled(m_runner->isRunning());

@@ -3,6 +3,7 @@
 
 #include "drive_connection.h"
 #include "scope_catalog.h"
+#include "soft_limits.h"
 
 #include "scope/play_parser.h"
 #include "serialport/bds5_variable_file.h"
@@ -74,23 +75,45 @@ void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response
         bool ok = false;
         for (int i = 0; i < std::min(words.size(), names.size()); ++i)
             if (const double v = words[i].toDouble(&ok); ok) m_driveValues[names[i]] = v;
-        return emit driveValuesRead();
+        emit driveValuesRead();
+        // The last of readGains()' answers: a run that waited for them starts with the amplitude the panel has
+        // just proposed from these values (on the first run too, not only from the second on).
+        if (m_runAfterRead) {
+            m_runAfterRead = false;
+            if (m_running)
+                startRun(); // a run was waiting for the gains
+            else
+                runOnce(); // TUNE: show the step with the gains it chose
+        }
+        return;
+    }
+    if (id == m_limitsId) {
+        m_limitsId = 0;
+        const auto limits = SoftLimits::parse(response.lines);
+        if (!response.errors.isEmpty() || !limits) {
+            const QString answer = response.errors.isEmpty() ? response.text.trimmed()
+                                                             : serialport::describeError(response.errors.first());
+            return endRuns(tr("The soft limits could not be read (%1 answered \"%2\"): the test move was not run.")
+                               .arg(SoftLimits::printLine(), answer));
+        }
+        m_limitsChecked = true;
+        const QString why = limits->conflict(m_move, m_driveValues);
+        if (why.isEmpty()) return startRun();
+        m_awaitingLimits = true;
+        return emit softLimitsInTheWay(why);
+    }
+    if (id == m_limitsOffId) {
+        m_limitsOffId = 0;
+        if (!response.errors.isEmpty()) // the run goes on; MoveWatch reports the ERR 23 that follows
+            emit message(tr("The drive refused PLIM=0: %1").arg(serialport::describeError(response.errors.first())));
+        return;
     }
     if (id == m_readId || id == m_readSwitchesId) {
         const QStringList& names = id == m_readId ? kNumericGains : kSwitches;
         const QStringList words = response.lines.join(QLatin1Char(' ')).split(QLatin1Char(' '), Qt::SkipEmptyParts);
         for (int i = 0; i < std::min(words.size(), names.size()); ++i)
             if (const auto v = valueOf(words[i])) m_gains[names[i]] = *v;
-        if (id == m_readSwitchesId) {
-            emit gainsRead(m_gains);
-            if (m_runAfterRead) {
-                m_runAfterRead = false;
-                if (m_running)
-                    startRun(); // a run was waiting for the gains
-                else
-                    runOnce(); // TUNE: show the step with the gains it chose
-            }
-        }
+        if (id == m_readSwitchesId) emit gainsRead(m_gains);
         return;
     }
     if (id == m_tuneId) {
@@ -124,42 +147,73 @@ void TuningRunner::runContinuously() {
 
 void TuningRunner::stop() {
     m_continuous = false;
+    if (m_awaitingLimits || m_limitsId) return endRuns(tr("Not run: stopped before the test move."));
     if (m_record) m_record->cancel();
+    emit stateChanged();
+}
+
+void TuningRunner::runWithoutSoftLimits() {
+    if (!m_awaitingLimits) return;
+    m_awaitingLimits = false;
+    m_limitsOff = true;
+    m_limitsOffId = send(QStringLiteral("PLIM=0")); // queued ahead of the run's RECORD
+    startRun();
+}
+
+// Once per Run Once or Run Continuously: PLIM, PMAX, PMIN and PFB against the test move (SoftLimits).
+void TuningRunner::checkSoftLimits() {
+    m_limitsId = send(SoftLimits::printLine(), serialport::Bds5Session::Echo::Quiet);
+    if (!m_limitsId) endRuns(tr("Not connected to a drive: use Drive > Connect."));
+}
+
+void TuningRunner::endRuns(const QString& failure) {
+    m_cycle.invalidate();
+    m_running = m_continuous = false;
+    m_awaitingLimits = m_limitsChecked = false;
+    m_limitsId = 0;
+    if (m_limitsOff) { // turned off for the test only: the drive's limits are back once it is over
+        m_limitsOff = false;
+        setGain(QStringLiteral("PLIM"), 1);
+    }
+    if (!failure.isEmpty()) emit runFailed(failure);
     emit stateChanged();
 }
 
 void TuningRunner::startRun() {
     serialport::Bds5Session* session = m_connection.session();
-    if (!session || !m_connection.isConnected()) {
-        m_running = m_continuous = false;
-        emit runFailed(tr("Not connected to a drive: use Drive > Connect."));
-        return emit stateChanged();
-    }
+    if (!session || !m_connection.isConnected()) return endRuns(tr("Not connected to a drive: use Drive > Connect."));
     if (m_gains.isEmpty()) { // the run's gains must be known: read them first, then run
         m_runAfterRead = true;
         m_cycle.start();
         return readGains();
     }
+    if (!m_limitsChecked) return checkSoftLimits();
     if (!m_runAfterRead && !m_cycle.isValid()) m_cycle.start();
     m_runGains = m_gains; // every assignment queued so far reaches the drive before RECORD
     m_record = new serialport::Bds5RecordPlay(*session, m_move.plan(), this);
+    m_watch = new MoveWatch(*session, *m_record); // a refused or faulted move ends the run without a result
     connect(m_record, &serialport::Bds5Transfer::progress, this, &TuningRunner::progress);
     connect(m_record, &serialport::Bds5Transfer::finished, this, &TuningRunner::onRecorded);
     emit runStarted(int(m_runs.size()) + 1);
+    emit recordStarted(m_record);
     m_record->start();
 }
 
 void TuningRunner::onRecorded(const serialport::Bds5TransferResult& result) {
     const serialport::Bds5RecordPlan plan = m_record ? m_record->plan() : m_move.plan();
     const QMap<QString, int> gains = m_runGains;
+    const QString moveFailure = m_watch ? m_watch->reason() : QString();
     if (m_record) m_record->deleteLater();
-    auto fail = [this](const QString& why) {
-        m_cycle.invalidate();
-        m_running = m_continuous = false;
-        emit runFailed(why);
-        emit stateChanged();
-    };
-    if (!result.ok()) return fail(result.summary);
+    // Samples of a move the drive refused or cut short would measure nothing (an "overshoot 0.0 %"): no run.
+    if (!moveFailure.isEmpty() || (result.ok() && !result.errors.isEmpty())) {
+        const serialport::Bds5LineError* refused = result.errors.isEmpty() ? nullptr : &result.errors.first();
+        const QString why =
+            !moveFailure.isEmpty()
+                ? moveFailure
+                : tr("the drive refused %1: %2.").arg(refused->sent, serialport::describeError(refused->error));
+        return endRuns(tr("Run %1 stopped: %2 No row or overlay was added.").arg(m_runs.size() + 1).arg(why));
+    }
+    if (!result.ok()) return endRuns(result.summary);
     std::vector<std::string> lines;
     qint64 bytes = 6; // "PLAY" CR LF echoed
     for (const QString& l : result.lines) {
@@ -168,7 +222,7 @@ void TuningRunner::onRecorded(const serialport::Bds5TransferResult& result) {
     }
     const auto parsed = scope::parsePlay(lines, unitOf);
     if (!parsed.capture || parsed.capture->channels.size() < 2)
-        return fail(tr("PLAY could not be read: %1").arg(QString::fromStdString(parsed.error)));
+        return endRuns(tr("PLAY could not be read: %1").arg(QString::fromStdString(parsed.error)));
     TuningRun run;
     run.number = int(m_runs.size()) + 1;
     run.gains = gains;
@@ -195,14 +249,13 @@ void TuningRunner::onRecorded(const serialport::Bds5TransferResult& result) {
     run.cycle_s = double(m_cycle.nsecsElapsed()) / 1e9;
     m_cycle.invalidate();
     run.ideal_s = plan.durationMs() / 1000.0 + double(bytes) * kBitsPerByte / baud;
+    run.softLimitsOff = m_limitsOff;
     m_runs.append(run);
     emit runFinished(run);
     if (m_continuous)
         QTimer::singleShot(0, this, &TuningRunner::startRun);
-    else {
-        m_running = false;
-        emit stateChanged();
-    }
+    else
+        endRuns();
 }
 
 void TuningRunner::undoTo(int runNumber) {

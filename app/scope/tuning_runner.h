@@ -1,10 +1,12 @@
 // TuningRunner: the tuning panel's work on the drive, through the session only — gain assignments confirmed
-// by the prompt, reading the gains back (P), test runs (RECORD + test move + PLAY, parsed and measured),
+// by the prompt, reading the gains back (P), test runs (RECORD + test move + PLAY, parsed and measured; the
+// soft limits checked first, a refused or faulted move reported and dropped, see MoveWatch),
 // "Run continuously" (repeat until stopped), undo to an earlier run's gains, and TUNE <bandwidth>
 // <stability>. Each run times itself against its ideal: test move + record + PLAY transfer time.
 // GUI thread; never blocks.
 #pragma once
 
+#include "move_watch.h"
 #include "test_move.h"
 
 #include "scope/capture.h"
@@ -29,6 +31,7 @@ struct TuningRun {
     bool currentSaturated = false; // ICMD reached ILIM: the step says little about the loop
     double cycle_s = 0;            // wall time of the whole cycle
     double ideal_s = 0;            // record time + PLAY bytes on the wire
+    bool softLimitsOff = false;    // PLIM was off for this run only (runWithoutSoftLimits)
 };
 
 class TuningRunner final : public QObject {
@@ -45,9 +48,14 @@ public:
 
     void setTestMove(const TestMove& move) { m_move = move; }
     const TestMove& testMove() const { return m_move; }
+    // A run (or a series) first reads the soft limits (SoftLimits); when the test move would pass them it
+    // waits with softLimitsInTheWay() for runWithoutSoftLimits() or stop().
     void runOnce();
     void runContinuously();
-    void stop(); // after the run in progress; cancels its recording
+    void stop(); // after the run in progress; cancels its recording, or the run waiting for an answer
+    // The answer to softLimitsInTheWay(): PLIM=0 for the test, PLIM=1 again once the runs end.
+    void runWithoutSoftLimits();
+    bool isWaitingForAnswer() const { return m_awaitingLimits; }
     bool isRunning() const { return m_running; }
     bool isContinuous() const { return m_continuous; }
 
@@ -65,13 +73,19 @@ signals:
     void runStarted(int number);
     void progress(int done, int total);
     void runFinished(const app::TuningRun& run);
-    void runFailed(const QString& why);
+    void runFailed(const QString& why); // nothing was added: no run, row or overlay
+    // The test move would pass PMAX or PMIN with PLIM on (why: SoftLimits::conflict): the run waits.
+    void softLimitsInTheWay(const QString& why);
     void stateChanged(); // running / continuous / idle
+    // A run's RECORD/PLAY is about to start (the Scope folds its PLAY listings in the terminal).
+    void recordStarted(serialport::Bds5RecordPlay* record);
     void message(const QString& text);
 
 private:
     void startRun();
+    void checkSoftLimits();
     void onRecorded(const serialport::Bds5TransferResult& result);
+    void endRuns(const QString& failure = {}); // idle again; failure: runFailed(failure)
     void onAnswer(quint64 id, const serialport::Bds5Response& response);
     quint64 send(const QString& line, serialport::Bds5Session::Echo echo = serialport::Bds5Session::Echo::Shown);
 
@@ -86,6 +100,12 @@ private:
     TestMove::DriveValues m_driveValues;
     quint64 m_tuneId = 0;
     QPointer<serialport::Bds5RecordPlay> m_record;
+    QPointer<MoveWatch> m_watch;  // of m_record
+    quint64 m_limitsId = 0;       // P PLIM PMAX PMIN PFB
+    quint64 m_limitsOffId = 0;    // PLIM=0 for the test
+    bool m_limitsChecked = false; // for the runs in progress
+    bool m_awaitingLimits = false;
+    bool m_limitsOff = false; // PLIM=0 was sent for the runs in progress; PLIM=1 follows them
     QList<TuningRun> m_runs;
     QElapsedTimer m_cycle;
     bool m_running = false;

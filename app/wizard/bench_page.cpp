@@ -41,10 +41,8 @@ BenchPage::BenchPage(WizardContext context, const QString& title, const QString&
                      const QStringList& readout, QWidget* parent)
     : QWizardPage(parent), m_context(context), m_readout(readout) {
     setTitle(title);
+    setSubTitle(text); // in the wizard's header, as every page's (SetupWizard numbers them)
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(text, this);
-    intro->setWordWrap(true);
-    layout->addWidget(intro);
     if (!actions.isEmpty()) {
         auto* row = new QHBoxLayout;
         for (const Action& action : actions) {

@@ -72,7 +72,9 @@ void ParameterPage::addRow(const QString& name) {
         editor = box;
     } else {
         auto* field = new QLineEdit(this);
-        field->setMaximumWidth(120);
+        // Wide enough for the longest value a BDS5 variable holds (AMAX showed "00000" of 3000000).
+        field->setMinimumWidth(field->fontMetrics().horizontalAdvance(QStringLiteral("-2147483648")) + 16);
+        field->setMaximumWidth(field->minimumWidth() + 40);
         field->setAlignment(Qt::AlignRight);
         connect(field, &QLineEdit::textEdited, this, [this, name](const QString& t) { edited(name, t); });
         editor = field;

@@ -40,6 +40,7 @@ SetupWizard::SetupWizard(DriveConnection& connection, QWidget* parent)
     addPage(m_reset);
     m_summary = new SummaryPage(*m_context, this);
     addPage(m_summary);
+    numberPages();
 }
 
 SetupWizard::~SetupWizard() = default;
@@ -124,6 +125,17 @@ void SetupWizard::addParameterPages() {
                      s("BAUD ADDR ABAUD WATCH PROMPT MULTI ECHO"));
     addParameterPage(tr("Other"), tr("Remaining dedicated switches."),
                      s("DEP FAULT STATMODE TRIP CAP CAPDIR REG GATEMODE"));
+}
+
+// "Step 3 of 15 — ..." heads every page's subtitle. A subtitle on every page also gives every page QWizard's
+// one header: a page without one shows its title in the page body instead, in another style.
+void SetupWizard::numberPages() {
+    const QList<int> ids = pageIds();
+    for (qsizetype i = 0; i < ids.size(); ++i) {
+        QWizardPage* p = page(ids[i]);
+        const QString step = tr("Step %1 of %2").arg(i + 1).arg(ids.size());
+        p->setSubTitle(p->subTitle().isEmpty() ? step : tr("%1 \u2014 %2").arg(step, p->subTitle()));
+    }
 }
 
 int SetupWizard::pageIdOf(const QString& title) const {

@@ -1,7 +1,8 @@
 // SetupWizard: Motion Link's Setup Program (manual L1213-1233) as a QWizard — communicate, resolver
 // zeroing, tune, drive test, feedback, input and output tests, machine units and limits, motor, modes,
 // communications, other, reset and send variables. Its pages read and write only through the session;
-// parameter pages hold their edits until the Send Variables page sends them. GUI thread; opened modeless.
+// parameter pages hold their edits until the Send Variables page sends them. Every page has the same header:
+// its title, and "Step N of M — what it is for". GUI thread; opened modeless.
 #pragma once
 
 #include "wizard_context.h"
@@ -43,6 +44,7 @@ private:
     void addParameterPages();
     ParameterPage* addParameterPage(const QString& title, const QString& subTitle, const QStringList& names);
     QStringList liveNames() const;
+    void numberPages();
 
     VariableModel* m_model;
     VariableSync* m_sync;

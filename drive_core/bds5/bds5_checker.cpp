@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <set>
 
 namespace drive_core::bds5 {
@@ -63,6 +64,23 @@ std::vector<Diagnostic> checkProgram(const std::vector<std::string>& lines) {
     Bds5State scratch;
     scratch.enabled = true;
     Bds5Interpreter interpreter(scratch);
+    // The program may be meant for a drive with v3's EXTDX on or off: X251-X750 exist only while it is on,
+    // RECORD/PLAY and TRECORD/TPLAY only while it is off (L9295-9297, L9309). A line that fails is tried
+    // again with EXTDX the other way, and flagged only if it fails there too.
+    std::optional<Bds5State> other;
+    const auto failsEitherWay = [&](const LexedLine& l, int n) {
+        if (!other) {
+            other.emplace();
+            other->enabled = true;
+        }
+        other->variables.set("EXTDX", scratch.variables.read("EXTDX").value_or(0) ? 0 : 1);
+        other->serialBusy = false;
+        other->pendingInput.reset();
+        std::string printed;
+        const Outcome o = Bds5Interpreter(*other).execute(l.entries, ExecContext{Origin::Program, n}, printed);
+        other->motion.halt();
+        return o.error && kTextErrors.count(o.error->code);
+    };
     for (int n = 1; n <= int(lines.size()); ++n) {
         const std::string& text = lines[std::size_t(n - 1)];
         if (int(text.size()) > kMaxLineLength)
@@ -97,7 +115,7 @@ std::vector<Diagnostic> checkProgram(const std::vector<std::string>& lines) {
         scratch.serialBusy = false;
         scratch.pendingInput.reset();
         const Outcome o = interpreter.execute(l.entries, ExecContext{Origin::Program, n}, printed);
-        if (o.error && kTextErrors.count(o.error->code)) {
+        if (o.error && kTextErrors.count(o.error->code) && failsEitherWay(l, n)) {
             out.push_back(diagnose(n, text, *o.error));
             continue;
         }

@@ -175,9 +175,12 @@ void Bds5Drive::inputLine(const std::string& line) {
     answer.erase(answer.find_last_not_of(" \t") + 1);
     if (!answer.empty()) {
         const auto value = parseAnswer(answer, request.decimals);
+        const auto before = m_state.variables.read(request.variable);
         int error = 83;
         if (value && *value >= request.minimum && *value <= request.maximum)
             error = m_state.variables.write(request.variable, *value, m_state.enabled);
+        if (!error && request.variable == "EXTDX" && before != m_state.variables.read(request.variable))
+            switchExtendedRegisters(m_state);
         if (error) {
             sendError(Bds5Error{error, answer, 0}, "");
             transmit(request.text);

@@ -19,27 +19,28 @@ bool isConstant(const cat::VariableInfo& v) {
 
 void dumpVariable(const Bds5State& state, const cat::VariableInfo& v, std::string& out) {
     const int first = v.firstIndex == 0 ? 0 : v.firstIndex;
-    const int last = v.firstIndex == 0 ? 0 : v.lastIndex;
+    const int last = v.firstIndex == 0 ? 0 : cat::highestIndex(v);
     for (int i = first; i <= last; ++i) {
         const std::string name = std::string(v.name) + (i ? std::to_string(i) : std::string());
         const auto value = state.variables.read(name);
-        if (!value) continue;
+        if (!value) continue; // X251-X750 while EXTDX is off
         out += (refusedOnUpload(v) ? ";" : "") + name + " " + std::to_string(*value) + "\r\n";
     }
 }
 
-// A variable whose value bounds another's writes (AMAX for ACC and DEC, Table E.1).
+// A variable whose value bounds another's writes (AMAX for ACC and DEC, Table E.1), or decides which of
+// another's indices exist (EXTDX for X251-X750, v3 L9309).
 bool boundsOthers(const cat::VariableInfo& v) {
     for (const cat::VariableInfo& other : cat::variables())
-        if (other.maximumVariable == v.name) return true;
+        if (other.maximumVariable == v.name || other.extendedBy == v.name) return true;
     return false;
 }
 
 } // namespace
 
 // Re-sent, the dump must restore every line (decision 8): the bounds come first, so ACC is not refused
-// against an AMAX not yet restored; ADDR comes last, so a new ID puts the drive to sleep (and deaf) only
-// after everything else has arrived.
+// against an AMAX not yet restored, nor X251-X750 against an EXTDX not yet on (decision 15); ADDR comes
+// last, so a new ID puts the drive to sleep (and deaf) only after everything else has arrived.
 std::string dumpAll(const Bds5State& state) {
     std::string out;
     for (const std::string& line : state.program.lines()) out += ";" + line + "\r\n";

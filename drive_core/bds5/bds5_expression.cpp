@@ -85,8 +85,12 @@ private:
         }
         if (word == "X" && m_pos < m_text.size() && m_text[m_pos] == '(') { // indirect X(Xn)
             const std::int64_t index = parenthesised();
-            if (index < 1 || index > 250) throw Failure{85};
-            return readVariable("X" + std::to_string(index));
+            // A user variable that does not exist is ERR 85 (L7390-7394): past X250, or past X750 with
+            // EXTDX on (v3) — the reader knows which the drive has now.
+            if (index < 1) throw Failure{85};
+            const auto v = m_read("X" + std::to_string(index));
+            if (!v) throw Failure{85};
+            return *v;
         }
         if (const auto constant = parseConstant(word)) return *constant; // ON OFF Y N
         return readVariable(std::string(word));

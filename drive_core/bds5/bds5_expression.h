@@ -10,7 +10,8 @@
 namespace drive_core::bds5 {
 
 // Reads a variable by upper-case name ("X12", "VMAX"), in user units. Returns nullopt if the name is
-// no variable (the evaluator then reports ERR 80). Indirection X(X1) is resolved by the evaluator.
+// no variable the drive has now (the evaluator then reports ERR 80, or ERR 85 for the Xn an indirect
+// X(X1) points at). Indirection X(X1) is resolved by the evaluator.
 using VariableReader = std::function<std::optional<std::int32_t>(std::string_view name)>;
 
 struct ExpressionResult {

@@ -20,6 +20,14 @@ void logError(Bds5State& state, int code) {
     while (state.errorHistory.size() > kErrorHistorySize) state.errorHistory.pop_back();
 }
 
+void switchExtendedRegisters(Bds5State& state) {
+    const cat::VariableInfo* x = cat::findVariable("X1")->info;
+    for (int i = x->lastIndex + 1; i <= cat::highestIndex(*x); ++i) state.variables.set(cat::VariableRef{x, i}, 0);
+    state.recorder.clear();
+    state.traceBuffer.clear();
+    state.traceRecording = false;
+}
+
 namespace {
 
 // "VFB[5.3]" -> expression "VFB", format "5.3"; nullopt when the brackets are malformed.
@@ -183,9 +191,13 @@ Outcome Bds5Interpreter::dispatch(std::span<const Entry> entries, const ExecCont
     for (const char* motionWord :
          {"J", "MA", "MI", "W", "NORM", "ZPE", "JT", "JF", "MRD", "CONTINUE", "MCA", "MCI", "MCD", "MCGO"})
         if (word == motionWord) return motionCommand(entries, context);
-    if (word == "CLEARX") { // v3: zero X1-X750 and XS1-XS50 (L9308)
-        for (int i = 1; i <= 250; ++i) m_state.variables.set("X" + std::to_string(i), 0);
-        for (int i = 1; i <= 50; ++i) m_state.variables.set("XS" + std::to_string(i), 0);
+    if (word == "CLEARX") { // v3: zero "all user registers and user flags", X1-X750 and XS1-XS50 (L9308)
+        // X251-X750 are zeroed whether EXTDX is on or not: while it is off they do not exist and hold 0.
+        for (const char* family : {"X1", "XS1"}) {
+            const cat::VariableInfo* v = cat::findVariable(family)->info;
+            for (int i = v->firstIndex; i <= cat::highestIndex(*v); ++i)
+                m_state.variables.set(cat::VariableRef{v, i}, 0);
+        }
         return {};
     }
     // X(Xn) = expr with blanks around '=' (L9548, the cam test's "X(X1) = (X1-100)*100") is an assignment too.
@@ -331,7 +343,7 @@ Outcome Bds5Interpreter::input(std::span<const Entry> entries, std::string& out)
         target.resize(open);
     }
     const auto ref = cat::findVariable(target);
-    if (!ref) return {Bds5Error{80, target, 0}};
+    if (!ref || !m_state.variables.exists(*ref)) return {Bds5Error{80, target, 0}};
     if (ref->info->write == cat::WriteCondition::Never) return {Bds5Error{81, target, 0}};
     if (ref->info->write == cat::WriteCondition::Factory) return {Bds5Error{111, target, 0}};
     request.variable = target;
@@ -377,10 +389,12 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
         const ExpressionResult index =
             evaluate(name.substr(2, name.size() - 3), [this](auto n) { return readValue(n); });
         if (index.error) return Bds5Error{index.error, name, 0};
-        if (index.value < 1 || index.value > 250) return Bds5Error{85, name, 0};
+        // Pointing at no user variable is ERR 85 (L7390-7394): X251-X750 count only while EXTDX is on.
+        if (index.value < 1 || !m_state.variables.exists("X" + std::to_string(index.value)))
+            return Bds5Error{85, name, 0};
         name = "X" + std::to_string(index.value);
     }
-    if (!cat::findVariable(name)) return Bds5Error{80, name, 0};
+    if (!m_state.variables.exists(name)) return Bds5Error{80, name, 0};
     const ExpressionResult r = evaluate(expression, [this](auto n) { return readValue(n); });
     if (r.error) return Bds5Error{r.error, expression, 0};
     if (name == "GATEMODE" && r.value == 1 && m_state.motion.moving()) // not while motion is commanded (L5957)
@@ -403,8 +417,10 @@ std::optional<Bds5Error> Bds5Interpreter::assign(std::span<const Entry> entries)
         m_state.variables.set("PCMD", std::int32_t(*basic));
         return std::nullopt;
     }
+    const auto extended = name == "EXTDX" ? m_state.variables.read(name) : std::nullopt;
     if (const int error = m_state.variables.write(name, r.value, m_state.enabled))
         return Bds5Error{error, error == 83 ? expression : name, 0};
+    if (extended && r.value != *extended) switchExtendedRegisters(m_state);
     if (name == "CAPDIR") m_state.variables.set("CAP", 0);                // writing CAPDIR turns CAP off (L2627)
     if (name == "GEAR" && r.value == 1) m_state.variables.set("VOFF", 0); // VOFF is reset by GEAR ON (L3031)
     return std::nullopt;

@@ -55,6 +55,11 @@ constexpr std::size_t kErrorHistorySize = 20;
 // Appends an error number to the history (newest first, 20 entries).
 void logError(Bds5State& state, int code);
 
+// EXTDX has just changed (v3, L9295-9297, L9309): X251-X750 appear or disappear. They live in the memory of
+// the RECORD (PC-SCOPE) and real-time trace buffers, which cannot be used while EXTDX is on, so either change
+// discards the recording and the trace, and the extended registers start from 0 (DECISIONS.md 12).
+void switchExtendedRegisters(Bds5State& state);
+
 // Where an instruction comes from; decides which commands are legal (App. C "Modes").
 enum class Origin { Terminal, Monitor, Program };
 

@@ -151,11 +151,13 @@ Outcome Bds5Interpreter::motionCommand(std::span<const Entry> entries, const Exe
     return {};
 }
 
-// RECORD <n> <ms> <v1> [v2 v3 v4] | PLAY (L6370-6397, L7011-7037).
+// RECORD <n> <ms> <v1> [v2 v3 v4] | PLAY (L6370-6397, L7011-7037). With v3's EXTDX on, PC-SCOPE (RECORD and
+// PLAY) is unavailable (L9295-9297); the manual names no error: ERR 63 NOT AT THIS LEVEL (DECISIONS.md 11).
 Outcome Bds5Interpreter::record(std::span<const Entry> entries, std::string& out) {
     const auto args = entries.subspan(1);
     if (entries.front().text == "PLAY") {
         if (!args.empty()) return {Bds5Error{82, args.front().text, 0}};
+        if (m_state.variables.read("EXTDX").value_or(0)) return {Bds5Error{63, "PLAY", 0}};
         const auto listing = m_state.recorder.play();
         if (!listing) return {Bds5Error{65, "PLAY", 0}}; // RECORD NOT READY
         out += *listing;
@@ -171,7 +173,7 @@ Outcome Bds5Interpreter::record(std::span<const Entry> entries, std::string& out
     std::vector<std::string> names;
     for (const Entry& e : args.subspan(2)) names.push_back(e.text);
     std::string bad;
-    if (const int e = m_state.recorder.start(n.value, t.value, names, bad))
+    if (const int e = m_state.recorder.start(n.value, t.value, names, m_state.variables, bad))
         return {Bds5Error{e, bad.empty() ? joined(entries) : bad, 0}};
     return {};
 }
@@ -189,8 +191,10 @@ Outcome Bds5Interpreter::random(std::span<const Entry> entries) {
         return {};
     }
     if (args.size() != 3) return {Bds5Error{82, joined(entries), 0}};
+    // "<user reg>=1-250" (L9310), even with EXTDX on: X251-X750 cannot take a random number (DECISIONS.md 14).
     const auto target = cat::findVariable(args[0].text);
-    if (!target || target->info->name != "X") return {Bds5Error{83, args[0].text, 0}};
+    if (!target || target->info->name != "X" || target->index > target->info->lastIndex)
+        return {Bds5Error{83, args[0].text, 0}};
     const ExpressionResult a = evaluate(args[1].text, reader);
     if (a.error) return {Bds5Error{a.error, args[1].text, 0}};
     const ExpressionResult b = evaluate(args[2].text, reader);

@@ -9,7 +9,8 @@ namespace drive_core::bds5 {
 
 namespace cat = catalog::bds5;
 
-int Bds5Recorder::start(int intervals, int periodMs, const std::vector<std::string>& names, std::string& badEntry) {
+int Bds5Recorder::start(int intervals, int periodMs, const std::vector<std::string>& names,
+                        const Bds5VariableStore& vars, std::string& badEntry) {
     if (names.empty() || names.size() > 4) return 82;
     if (periodMs < 1 || periodMs > 60'000) { // 1 ms .. 1 minute
         badEntry = std::to_string(periodMs);
@@ -21,7 +22,7 @@ int Bds5Recorder::start(int intervals, int periodMs, const std::vector<std::stri
     }
     for (const std::string& name : names) {
         const auto ref = cat::findVariable(name);
-        if (!ref) {
+        if (!ref || !vars.exists(*ref)) {
             badEntry = name;
             return 80;
         }

@@ -19,9 +19,10 @@ constexpr int kRecordPoints = 1000; // total points (n x variables), ERR 90 beyo
 
 class Bds5Recorder {
 public:
-    // Checks and starts a recording; 0 or the error number (82, 83, 89 not recordable, 90 too many points).
-    // On an error the variable at fault is named through badEntry.
-    int start(int intervals, int periodMs, const std::vector<std::string>& names, std::string& badEntry);
+    // Checks and starts a recording; 0 or the error number (80 no such variable in vars now, 82, 83, 89 not
+    // recordable, 90 too many points). On an error the variable at fault is named through badEntry.
+    int start(int intervals, int periodMs, const std::vector<std::string>& names, const Bds5VariableStore& vars,
+              std::string& badEntry);
     void clear() { *this = Bds5Recorder{}; }
 
     // Samples when a period has passed (call every simulated millisecond).

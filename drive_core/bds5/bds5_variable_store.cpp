@@ -16,22 +16,37 @@ Bds5VariableStore::Bds5VariableStore() {
     std::size_t next = 0;
     for (const cat::VariableInfo& v : vars) {
         m_firstSlot.push_back(next);
-        next += v.firstIndex == 0 ? 1 : std::size_t(v.lastIndex - v.firstIndex + 1);
+        next += slotCount(v);
     }
     m_values.assign(next, 0);
-    for (std::size_t i = 0; i < vars.size(); ++i) {
-        const std::size_t count = vars[i].firstIndex == 0 ? 1 : std::size_t(vars[i].lastIndex - vars[i].firstIndex + 1);
-        for (std::size_t k = 0; k < count; ++k) m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
-    }
+    for (std::size_t i = 0; i < vars.size(); ++i)
+        for (std::size_t k = 0; k < slotCount(vars[i]); ++k)
+            m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
+}
+
+// A family keeps slots for its extended indices too (X251-X750): they hold 0 while the switch is off.
+std::size_t Bds5VariableStore::slotCount(const cat::VariableInfo& v) {
+    return v.firstIndex == 0 ? 1 : std::size_t(cat::highestIndex(v) - v.firstIndex + 1);
 }
 
 void Bds5VariableStore::powerUp() {
     const auto vars = cat::variables();
     for (std::size_t i = 0; i < vars.size(); ++i) {
         if (vars[i].persistence != cat::Persistence::Volatile) continue;
-        const std::size_t count = vars[i].firstIndex == 0 ? 1 : std::size_t(vars[i].lastIndex - vars[i].firstIndex + 1);
-        for (std::size_t k = 0; k < count; ++k) m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
+        for (std::size_t k = 0; k < slotCount(vars[i]); ++k)
+            m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
     }
+}
+
+bool Bds5VariableStore::exists(const cat::VariableRef& ref) const {
+    if (ref.index <= ref.info->lastIndex || ref.info->extendedBy.empty()) return true;
+    const auto on = cat::findVariable(ref.info->extendedBy);
+    return on && read(*on) != 0;
+}
+
+bool Bds5VariableStore::exists(std::string_view upperName) const {
+    const auto ref = cat::findVariable(upperName);
+    return ref && exists(*ref);
 }
 
 namespace {
@@ -85,7 +100,7 @@ std::optional<std::int64_t> Bds5VariableStore::toUser(cat::UnitClass unit, std::
 
 std::optional<std::int32_t> Bds5VariableStore::read(std::string_view upperName) const {
     const auto ref = cat::findVariable(upperName);
-    if (!ref) return std::nullopt;
+    if (!ref || !exists(*ref)) return std::nullopt;
     return readUser(*ref);
 }
 
@@ -118,7 +133,7 @@ void Bds5VariableStore::setBits(std::string_view stem, int count, std::int32_t w
 
 int Bds5VariableStore::write(std::string_view upperName, std::int64_t value, bool driveEnabled) {
     const auto ref = cat::findVariable(upperName);
-    if (!ref) return 80;
+    if (!ref || !exists(*ref)) return 80; // X251-X750 with EXTDX off: unknown, as before v3 (L7370)
     switch (ref->info->write) {
     case cat::WriteCondition::Never: return 81;
     case cat::WriteCondition::Factory: return 111;

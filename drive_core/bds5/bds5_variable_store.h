@@ -27,8 +27,13 @@ public:
     // Power-up: volatile variables take their power-up values; remembered ones keep theirs.
     void powerUp();
 
-    // In user units; nullopt if there is no such variable. A value that overflows 32 bits in user units
-    // reads as the nearest 32-bit value (ERR 96 is a write's error).
+    // Whether the drive has the variable now: every catalog variable does, but the extended indices of a
+    // family only while its switch is on (v3: X251-X750 while EXTDX is on, L9309).
+    bool exists(const catalog::bds5::VariableRef& ref) const;
+    bool exists(std::string_view upperName) const;
+
+    // In user units; nullopt if there is no such variable (or it does not exist now). A value that overflows
+    // 32 bits in user units reads as the nearest 32-bit value (ERR 96 is a write's error).
     std::optional<std::int32_t> read(std::string_view upperName) const;
     // In basic units. Inline: the servo loop reads a score of variables every millisecond.
     SERVODESK_NO_COVERAGE std::int32_t read(const catalog::bds5::VariableRef& ref) const {
@@ -39,8 +44,8 @@ public:
     std::int32_t readUser(const catalog::bds5::VariableRef& ref) const;
 
     // The drive's checks for a write (in user units) from the terminal or a program: 0 if accepted, else
-    // the error number (80 unknown, 81 monitor variable, 111 factory, 51 needs disabled, 83 out of
-    // range, 96 scaling overflow).
+    // the error number (80 unknown or not existing now, 81 monitor variable, 111 factory, 51 needs disabled,
+    // 83 out of range, 96 scaling overflow).
     int write(std::string_view upperName, std::int64_t value, bool driveEnabled);
 
     // User <-> basic for a unit class: basic = user * NUM / DEN, rounded to nearest (halves away from
@@ -48,7 +53,7 @@ public:
     std::optional<std::int64_t> toBasic(catalog::bds5::UnitClass unit, std::int64_t user) const;
     std::optional<std::int64_t> toUser(catalog::bds5::UnitClass unit, std::int64_t basic) const;
 
-    // Unchecked write, for the drive's own bookkeeping (monitor variables it maintains).
+    // Unchecked write, for the drive's own bookkeeping (monitor variables it maintains, CLEARX, EXTDX).
     SERVODESK_NO_COVERAGE void set(const catalog::bds5::VariableRef& ref, std::int32_t value) {
         if (ref.info == m_inWord || ref.info == m_outWord) return setWord(ref, value);
         m_values[slot(ref)] = value;
@@ -56,6 +61,7 @@ public:
     void set(std::string_view upperName, std::int32_t value);
 
 private:
+    static std::size_t slotCount(const catalog::bds5::VariableInfo& v);
     // IN and OUT are the words of the I1-I16 and O1-O8 switches (I1 = bit 0): one memory, two views.
     std::optional<std::int32_t> word(const catalog::bds5::VariableRef& ref) const;
     void setBits(std::string_view stem, int count, std::int32_t word);

@@ -57,7 +57,7 @@ std::optional<VariableRef> findVariable(std::string_view upperName) {
             continue;
         int index = 0;
         const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
-        if (ec != std::errc{} || index < v->firstIndex || index > v->lastIndex) continue;
+        if (ec != std::errc{} || index < v->firstIndex || index > highestIndex(*v)) continue;
         return VariableRef{v, index};
     }
     return std::nullopt;

@@ -92,6 +92,11 @@ struct VariableInfo {
     std::string_view name; // "VMAX"; indexed families give the stem: "X", "XS", "I", "O", "TMR"
     int firstIndex = 0;    // indexed families: first and last index (X: 1..250); 0,0 otherwise
     int lastIndex = 0;
+    // A family a switch extends (v3: EXTDX adds X251-X750, L9309): lastIndex+1..extendedLastIndex resolve
+    // (findVariable), but exist on the drive only while the switch `extendedBy` is on (Bds5VariableStore).
+    // 0 and "" for every other variable; editors that list a family show firstIndex..lastIndex.
+    int extendedLastIndex = 0;
+    std::string_view extendedBy{};
     std::string_view description; // the manual's words
     std::string_view units;       // as the manual prints them: "VEL", "ms", "counts", "" for none
     UnitClass unitClass = UnitClass::None;
@@ -126,8 +131,13 @@ struct VariableRef {
     const VariableInfo* info = nullptr;
     int index = 0; // 0 for plain variables, 1.. for indexed families (X12 -> index 12)
 };
-// Resolves "VMAX", "X12", "XS3", "I16" (upper-case). nullopt if no such variable.
+// Resolves "VMAX", "X12", "XS3", "I16" (upper-case), and the extended indices of a family ("X600"), which
+// the drive may not have at the moment (EXTDX off). nullopt if no such variable.
 std::optional<VariableRef> findVariable(std::string_view upperName);
+// The highest index a family can have: extendedLastIndex if the family has one, else lastIndex.
+inline int highestIndex(const VariableInfo& v) {
+    return v.extendedLastIndex > v.lastIndex ? v.extendedLastIndex : v.lastIndex;
+}
 
 // The inclusive limits a write is checked against (class limits or the explicit range).
 std::int64_t minimumOf(const VariableInfo& v);

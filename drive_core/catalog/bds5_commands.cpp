@@ -240,8 +240,9 @@ constexpr std::array kCommands{
                                "per sampled instant, the first taken when RECORD started and one every t ms "
                                "after: the values in RECORD order, each an integer in user units "
                                "right-justified in 12 columns as P prints it. Lines end with CR LF. Motion "
-                               "Link's scope formats and plots the data.",
-                .manualLines = "L6991-6993, L6395"},
+                               "Link's scope formats and plots the data. Not available while EXTDX is on "
+                               "(v3: ERR 63).",
+                .manualLines = "L6991-6993, L6395, L9295-9297"},
     CommandInfo{.name = "R", .longName = "REFRESH", .syntax = "R <expr>[format] | \"<text>\" ...",
                 .modes = kAll, .minEntries = 1, .maxEntries = 14,
                 .description = "Refresh screen: same as P except that no line feed is printed (CR only), to "
@@ -261,8 +262,8 @@ constexpr std::array kCommands{
                 .description = "Record 1-4 variables every <time> ms for <number> intervals (at most 1000 "
                                "points in all: 1000/500/333/250). PE, REMOTE, TMR1-TMR4, VAVG, VXAVG and "
                                "user switches cannot be recorded. Allowed from the user program or the "
-                               "interactive mode.",
-                .manualLines = "L7011-7037, L6370-6397"},
+                               "interactive mode. Not available while EXTDX is on (v3: ERR 63).",
+                .manualLines = "L7011-7037, L6370-6397, L9295-9297"},
     CommandInfo{.name = "RET", .longName = "RETURN", .syntax = "RET", .modes = kProgram, .minEntries = 0,
                 .maxEntries = 0,
                 .description = "Return from a subroutine (ERR 119 without GOSUB). Allowed only from the "
@@ -356,12 +357,12 @@ constexpr std::array kCommands{
                 .modes = kTerminalAndProgram, .minEntries = 1, .maxEntries = 3, .version3 = true,
                 .description = "Random number generator. RAND seed (0-31,000) starts the sequence; RAND Xn "
                                "e1 e2 stores a random number between the bounds e1 and e2 (|e1-e2| <= "
-                               "31,000) in user register Xn (n 1-250).",
+                               "31,000) in user register Xn (n 1-250, even with EXTDX on).",
                 .manualLines = "L9310"},
     CommandInfo{.name = "TRECORD", .longName = "TRACE RECORD", .syntax = "TRECORD START|STOP|CONTINUE",
                 .modes = kTerminalAndProgram, .minEntries = 1, .maxEntries = 1, .version3 = true,
                 .description = "Real time trace record command; can be buried in the user program to "
-                               "control real time tracing. Not available while EXTDX is on.",
+                               "control real time tracing. Not available while EXTDX is on (ERR 63).",
                 .manualLines = "L9317"},
     CommandInfo{.name = "TPLAY", .longName = "TRACE PLAYBACK",
                 .syntax = "TPLAY | TPLAY NEWEST <n> | TPLAY OLDEST <n> | TPLAY <n> | TPLAY <line1> <line2>",
@@ -369,7 +370,7 @@ constexpr std::array kCommands{
                 .description = "Real time trace playback: dumps the whole trace buffer, the newest or "
                                "oldest n lines, n lines, or lines line1 to line2, as #<line> LINE <pgm "
                                "line> <prompt> <command> (prompt ta. tB. tC. tV. t.. t*. tI. tM. names the "
-                               "active task).",
+                               "active task). Not available while EXTDX is on (ERR 63).",
                 .manualLines = "L9318-9319"},
 
     // ---- Resident editor (e-> prompt) ----

@@ -538,11 +538,12 @@ constexpr std::array kStandard{
     VariableInfo{.name = "WTIME", .description = "Serial watchdog timeout. Initially 1000.", .units = "ms",
                  .unitClass = U::Time, .limits = ShortPositive, .powerUpValue = 1000,
                  .group = G::Communication, .manualLines = "L7679, L1567"},
-    VariableInfo{.name = "X", .firstIndex = 1, .lastIndex = 250,
+    // v3: EXTDX on adds the extended user registers X251-X750; off, they are unknown (ERR 80, X(Xn) ERR 85).
+    VariableInfo{.name = "X", .firstIndex = 1, .lastIndex = 250, .extendedLastIndex = 750, .extendedBy = "EXTDX",
                  .description = "User variables X1-X250, initially 0. X(Xn) refers indirectly to the "
-                                "variable Xn points at (ERR 85 if none). With v3 EXTDX on, X251-X750 also "
-                                "exist.",
-                 .group = G::User, .manualLines = "L7680, L7682, L1572-1630"},
+                                "variable Xn points at (ERR 85 if none). Firmware v3: while EXTDX is on, the "
+                                "extended user registers X251-X750 exist too (ERR 80 while it is off).",
+                 .group = G::User, .manualLines = "L7680, L7682, L1572-1630, L9295-9297, L9309"},
     VariableInfo{.name = "XS", .firstIndex = 1, .lastIndex = 50,
                  .description = "User switches XS1-XS50, initially 0. XS1-XS10 may be used with H; none can "
                                 "be recorded.",

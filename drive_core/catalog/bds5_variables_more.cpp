@@ -33,9 +33,10 @@ constexpr std::array kMore{
                  .limits = Switch, .powerUpValue = 1, .group = G::Communication, .isSwitch = true,
                  .version3 = true, .manualLines = "L9304, L9289-9293, L10110"},
     VariableInfo{.name = "EXTDX",
-                 .description = "Enable the extended user registers X251-X750; PC-SCOPE (RECORD) and real "
-                                "time trace (TRECORD) cannot be used while it is on. Remembered on power-up "
-                                "(set EXTDX=0 after upgrading).",
+                 .description = "Enable the extended user registers X251-X750; PC-SCOPE (RECORD, PLAY) and "
+                                "real time trace (TRECORD, TPLAY) cannot be used while it is on (ERR 63), and "
+                                "turning it on or off discards what they had recorded. Remembered on "
+                                "power-up (set EXTDX=0 after upgrading).",
                  .limits = Switch, .powerUpValue = 0, .group = G::User, .isSwitch = true, .version3 = true,
                  .manualLines = "L9309, L9295-9297, L9321-9325"},
     // The name is lost in the OCR of L9311; CAM is the switch that NORM <pos> CAM turns on (L9314, L9462).

@@ -1,16 +1,23 @@
 // Capture: everything the session sent and received is in the capture, the .CAP file holds the drive's
-// text byte for byte, and a saved .CAP opens again unchanged.
+// text byte for byte, and a saved .CAP opens again unchanged — also where the terminal folds a record's or
+// a tuning run's PLAY listing into one line.
 #include "app/drive/capture_dock.h"
 #include "app/drive/capture_log.h"
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
 #include "app/drive/terminal_widget.h"
+#include "app/scope/play_terminal_fold.h"
+#include "app/scope/scope_controller.h"
+#include "app/scope/tuning_panel.h"
+#include "app/scope/tuning_runner.h"
 
 #include "serialport/bds5_session.h"
 
 #include <QAction>
 #include <QFile>
+#include <QMessageBox> // tuning_panel.h holds a QPointer to one
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -23,6 +30,17 @@ constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been se
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();
     return session && session->state() == serialport::Bds5Session::State::Ready;
+}
+bool atPrompt(const MainWindow& window) { // RECORD and PLAY work at the interactive prompt
+    return ready(window) && window.connection().session()->mode() == serialport::Bds5Mode::Interactive;
+}
+
+// The lines of text that are rows of sample values, as PLAY lists them.
+int sampleLines(const QString& text) {
+    int count = 0;
+    for (const QString& line : text.split(QLatin1Char('\n')))
+        if (app::PlayTerminalFold::isSampleLine(QString(line).remove(QLatin1Char('\r')))) ++count;
+    return count;
 }
 } // namespace
 
@@ -99,6 +117,73 @@ private slots:
         dock->setView(app::CaptureDock::View::AsSaved);
         QTRY_VERIFY(dock->shownText().startsWith(QStringLiteral("P \"CAPTURED\"\nCAPTURED\n-->P 7*6")));
         QVERIFY(!loaded.loadCap(dir.filePath(QStringLiteral("missing.cap"))).isEmpty());
+    }
+
+    // Issue 19 (13): each Scope record put its PLAY listing, a line per sample, in the terminal.
+    void aRecordsPlayListingIsOneTerminalLineAndWholeInTheCapture() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(atPrompt(window), kDriveTimeoutMs);
+        window.captureDock()->startAction()->trigger();
+
+        serialport::Bds5RecordPlan plan;
+        plan.samples = 40;
+        plan.intervalMs = 2;
+        plan.variables = {QStringLiteral("VCMD"), QStringLiteral("VFB")};
+        QSignalSpy shown(&window.scopeController(), &app::ScopeController::captureShown);
+        window.scopeController().record(plan);
+        QVERIFY(shown.wait(kDriveTimeoutMs));
+        QCOMPARE(window.scopeController().lastCapture()->sampleCount(), std::size_t(40)); // the scope has all
+
+        // The terminal: the PLAY echo, one line for the listing, the prompt.
+        const QString terminal = window.terminal()->text();
+        QVERIFY2(terminal.contains(QStringLiteral("-->PLAY\nPLAY: 40 samples \u2192 Scope\n-->")),
+                 qPrintable(terminal.right(600)));
+        QCOMPARE(sampleLines(terminal), 0);
+        QCOMPARE(terminal.count(QStringLiteral("RECORD 40 2 VCMD VFB")), 1); // RECORD's echo, not PLAY's header
+        QVERIFY(!window.terminal()->isFolding());
+
+        // The capture keeps what the drive sent: PLAY's header and every sample.
+        const QString cap = QString::fromLatin1(window.captureLog().capBytes());
+        const qsizetype play = cap.indexOf(QStringLiteral("PLAY\r\nRECORD 40 2 VCMD VFB\r\n"));
+        QVERIFY2(play >= 0, qPrintable(cap.right(600)));
+        const qsizetype prompt = cap.indexOf(QStringLiteral("-->"), play);
+        QVERIFY(prompt > play);
+        QCOMPARE(sampleLines(cap.mid(play, prompt - play)), 40);
+
+        // Typed by the user, PLAY lists every sample in the terminal, as the drive's own terminal would.
+        QTest::keyClicks(window.terminal(), QStringLiteral("PLAY"));
+        QTest::keyClick(window.terminal(), Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(sampleLines(window.terminal()->text()) == 40 && atPrompt(window), kDriveTimeoutMs);
+    }
+
+    // Issue 19 (13): each tuning run did the same.
+    void aTuningRunsPlayListingIsOneTerminalLine() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(atPrompt(window), kDriveTimeoutMs);
+        app::TuningPanel* panel = window.scopeController().tuningPanel();
+        app::TuningRunner& runner = panel->runner();
+        // The factory PMAX/PMIN (+-100 counts) stop a jog at once (ERR 23): PLIM off, then enable.
+        runner.setGain(QStringLiteral("PLIM"), 0);
+        window.connection().sendCommand(QStringLiteral("EN"));
+        QTRY_VERIFY_WITH_TIMEOUT(atPrompt(window), kDriveTimeoutMs);
+        app::TestMove move;
+        move.amplitude = 200;
+        move.durationMs = 25; // a short run: 50 samples to list
+        panel->setTestMove(move);
+        QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
+        runner.runOnce();
+        QVERIFY(runs.wait(kDriveTimeoutMs));
+
+        const int samples = int(runner.runs().constFirst().capture.sampleCount());
+        QVERIFY(samples > 1);
+        const QString terminal = window.terminal()->text();
+        QVERIFY2(terminal.contains(QStringLiteral("-->PLAY\nPLAY: %1 samples \u2192 Tuning panel\n-->").arg(samples)),
+                 qPrintable(terminal.right(600)));
+        QCOMPARE(sampleLines(terminal), 0);
     }
 
     void startClearsAndNothingIsKeptWhenStopped() {

@@ -5,6 +5,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import zlib
 
 BIN = sys.argv[1]
 CLI = os.path.join(BIN, "servodesk-cli")
@@ -94,8 +95,10 @@ with tempfile.TemporaryDirectory() as tmp:
     check("sc750 compile", r.returncode == 0 and os.path.exists(binary) and open(binary, "rb").read(4) != b"", r)
     up_bas = os.path.join(tmp, "UP.BAS")
     r = cli("--drive", "sc750", "download", bas, "run", "--follow", "3", "upload", up_bas)
-    check("sc750 download run upload", r.returncode == 0 and "CRC-32" in r.stdout
-          and "COUNT  1 \nCOUNT  2 \nCOUNT  3 \n" in r.stdout, r)
+    # The CRC the drive checked, against Python's zlib.crc32 (CRC-32/ISO-HDLC, the .BIN's CRC) of the same .BIN.
+    check("sc750 download run upload", r.returncode == 0
+          and "CRC-32 %08X of the %d-byte .BIN" % (zlib.crc32(open(binary, "rb").read()), os.path.getsize(binary))
+          in r.stdout and "COUNT  1 \nCOUNT  2 \nCOUNT  3 \n" in r.stdout, r)
     check("sc750 upload text", os.path.exists(up_bas) and open(up_bas).read() == open(bas).read(),
           open(up_bas).read() if os.path.exists(up_bas) else "")
     r = cli("--drive", "sc750", "send", "KVP=200", "KVP")

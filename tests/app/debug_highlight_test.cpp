@@ -1,6 +1,6 @@
 // Beyond Motion Link: while the drive single-steps or traces the manual's nested-IF example 55$ (X1=X2=1),
-// the editor highlights exactly the lines of the manual's trace (L5688-5699). Also the pieces: the
-// stream parser and the line matching.
+// the editor highlights exactly the lines of the manual's trace (L5688-5699), and the mark goes when another
+// family is chosen. Also the pieces: the stream parser and the line matching.
 #include "app/drive/debug_highlighter.h"
 #include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
@@ -154,6 +154,26 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(lastTerminalLine(window) == QStringLiteral("-->") && ready(window), kDriveTimeoutMs);
         QCOMPARE(markedLine(window), -1);
         QVERIFY(window.terminal()->text().contains(QStringLiteral("BOTH X1 AND X2 > 0")));
+    }
+
+    // Issue 19: the step mark is the BDS5 session's. Switching to the PMC-960 at the step prompt takes it out
+    // of the editor, which the PMC-960 then shows (and whose marker numbers the SC750's debugger shares).
+    void switchingFamilyClearsTheStepMark() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        loadProgram(window, {QStringLiteral("SS ON")});
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window) && lastTerminalLine(window) == QStringLiteral("-->"), kDriveTimeoutMs);
+        window.driveActions().run(55);
+        QTRY_COMPARE_WITH_TIMEOUT(markedLine(window), 0, kDriveTimeoutMs);
+        const auto* program = window.editor();
+
+        window.connectDrive(app::ConnectionChoice::simulator(drive_core::DriveFamily::Pmc960));
+        QCOMPARE(window.editor(), program);
+        QCOMPARE(markedLine(window), -1);
+        QCOMPARE(window.editor()->markerFindNext(0, 1 << app::DebugHighlighter::kArrowMarker), -1);
+        QCOMPARE(window.debugHighlighter().currentLine(), -1);
     }
 
     void traceHighlightsTheManualsTraceAndContinueRunsOn() {

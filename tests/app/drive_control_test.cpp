@@ -1,15 +1,20 @@
 // Terminal and drive control against the simulated BDS5: command history (F3, Up/Down, kept across
-// restarts, capped), ^X overtaking a long queue of commands and stopping motion in time, and the Drive
-// actions following the drive's mode.
+// restarts, capped), ^X overtaking a long queue of commands and stopping motion in time, the Drive
+// actions following the drive's mode, and Run Label offering the labels of the program in the editor.
 #include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
+#include "app/drive/run_label_dialog.h"
 #include "app/main_window.h"
 #include "app/drive/terminal_widget.h"
 
+#include "editor/program_editor.h"
 #include "serialport/bds5_session.h"
 #include "serialport/simulator_link.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -239,6 +244,58 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(session->mode() == serialport::Bds5Mode::Interactive && ready(window),
                                  kDriveTimeoutMs);
         QCOMPARE(terminalLines(window).last(), QStringLiteral("-->"));
+    }
+
+    // Issue 19: Run Label lists the labels of the program in the editor, and still takes a number only the
+    // drive's program has; text that names no label keeps Run disabled and says why (it used to vanish).
+    void runLabelOffersTheProgramsLabels() {
+        MainWindow window;
+        window.connectDrive(app::ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
+        // The drive's program has 10$ and 30$; the editor's has 10$ and 20$.
+        Bds5Session* session = window.connection().session();
+        for (const char* line : {">BDS", "10$", "P \"AT TEN\"", "B", "30$", "P \"AT THIRTY\"", "B"})
+            session->send(QString::fromLatin1(line));
+        session->sendEscape();
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window) && terminalLines(window).last() == QStringLiteral("-->"),
+                                 kDriveTimeoutMs);
+        window.editor()->setText(QStringLiteral("10$ ;FIRST\nP \"AT TEN\"\nB\n20$ ;SECOND\nB\nERROR$\nB\n"));
+
+        QVERIFY(window.driveActions().runAction()->isEnabled());
+        app::RunLabelDialog* dialog = window.driveActions().askRunLabel();
+        QVERIFY(dialog->isVisible());
+        QComboBox* combo = dialog->combo();
+        QVERIFY(combo->isEditable());
+        QCOMPARE(combo->count(), 2); // ERROR$ cannot be RUN
+        QCOMPARE(combo->itemText(0), QStringLiteral("10$  FIRST"));
+        QCOMPARE(combo->itemText(1), QStringLiteral("20$  SECOND"));
+        QCOMPARE(combo->currentText(), QStringLiteral("10$  FIRST"));
+        QVERIFY(dialog->runButton()->isEnabled());
+
+        combo->lineEdit()->clear();
+        QTest::keyClicks(combo->lineEdit(), QStringLiteral("TEN"));
+        QVERIFY(!dialog->runButton()->isEnabled());
+        QVERIFY2(dialog->note().contains(QStringLiteral("is not a label")), qPrintable(dialog->note()));
+        combo->lineEdit()->clear();
+        QTest::keyClicks(combo->lineEdit(), QStringLiteral("30"));
+        QVERIFY(dialog->runButton()->isEnabled());
+        QVERIFY2(dialog->note().contains(QStringLiteral("not in the program in the editor")),
+                 qPrintable(dialog->note()));
+        QTest::mouseClick(dialog->runButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(terminalLines(window).contains(QStringLiteral("AT THIRTY")), kDriveTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(ready(window) && session->mode() == serialport::Bds5Mode::Interactive &&
+                                     terminalLines(window).last() == QStringLiteral("-->"),
+                                 kDriveTimeoutMs);
+
+        // Chosen from the list: the editor's 10$.
+        dialog = window.driveActions().askRunLabel();
+        dialog->combo()->setCurrentIndex(1);
+        dialog->combo()->setCurrentIndex(0);
+        QCOMPARE(dialog->note(), QString());
+        QTest::mouseClick(dialog->runButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(terminalLines(window).contains(QStringLiteral("AT TEN")), kDriveTimeoutMs);
+        QVERIFY(terminalLines(window).contains(QStringLiteral("-->RUN 10")));
     }
 };
 

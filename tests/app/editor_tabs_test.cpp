@@ -1,6 +1,9 @@
 // Tabs, recent files, per-tab unsaved prompts, the two keymaps typed into a real main window, blocks,
-// merge and autosave — as a user sees them in the window, the tab bar, the menus and the status bar.
+// merge and autosave, files changed on disk by other programs — as a user sees them in the window, the tab
+// bar, the menus, the info bars and the status bar.
 #include "app/editing/autosaver.h"
+#include "app/editing/disk_change_bar.h"
+#include "app/editing/disk_watcher.h"
 #include "app/editing/document_controller.h"
 #include "app/editing/editor_actions.h"
 #include "app/editing/editor_area.h"
@@ -22,6 +25,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSaveFile>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -32,11 +36,19 @@
 using app::MainWindow;
 
 namespace {
+constexpr int kTimeoutMs = 30000; // a file watch's event, on a loaded machine
+
 QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
     const QString path = dir.filePath(name);
     QFile file(path);
     if (file.open(QIODevice::WriteOnly)) file.write(bytes);
     return path;
+}
+
+// As many editors save: a new file written beside the old one, then renamed over it.
+bool saveAtomically(const QString& path, const QByteArray& bytes) {
+    QSaveFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.commit();
 }
 
 QByteArray readAll(const QString& path) {
@@ -264,6 +276,150 @@ private slots:
         QCOMPARE(QDir(session).entryList({QStringLiteral("*.json")}).size(), 1);
         window.editorArea()->documents()->save();
         QCOMPARE(QDir(session).entryList({QStringLiteral("*.json")}).size(), 0);
+    }
+
+    // Issue 19 (9): a file changed on disk by another program still showed the old text.
+    void anUnmodifiedTabReloadsWhenItsFileChangesOnDisk() {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("MOTION.BDS"), "10$\nJ 100\nB\n");
+        MainWindow window;
+        window.show();
+        app::EditorArea* area = window.editorArea();
+        QVERIFY(area->documents()->openFile(path));
+        editor::ProgramEditor* ed = window.editor();
+
+        writeFile(dir, QStringLiteral("MOTION.BDS"), "10$\nJ 200\nB\n"); // written in place
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QStringLiteral("10$\nJ 200\nB\n"), kTimeoutMs);
+        QVERIFY(!ed->isModified());
+        QCOMPARE(window.statusBar()->currentMessage(), QStringLiteral("Reloaded MOTION.BDS: changed on disk"));
+        QVERIFY(!area->diskChangeBar()->isVisible()); // nothing to ask: the tab had no edits
+
+        // Saved by an editor that renames a new file over the old one, twice: the new file is watched too.
+        QVERIFY(saveAtomically(path, "10$\nJ 300\nB\n"));
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QStringLiteral("10$\nJ 300\nB\n"), kTimeoutMs);
+        QVERIFY(saveAtomically(path, "10$\nJ 400\nB\n"));
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QStringLiteral("10$\nJ 400\nB\n"), kTimeoutMs);
+        writeFile(dir, QStringLiteral("MOTION.BDS"), "10$\nJ 500\nB\n"); // in place: only the file's watch sees it
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QStringLiteral("10$\nJ 500\nB\n"), kTimeoutMs);
+
+        // Deleted, then written again.
+        QVERIFY(QFile::remove(path));
+        writeFile(dir, QStringLiteral("MOTION.BDS"), "10$\nJ 600\nB\n");
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QStringLiteral("10$\nJ 600\nB\n"), kTimeoutMs);
+        QVERIFY(!ed->isModified());
+        QCOMPARE(area->tabs()->count(), 2); // the sample program and MOTION.BDS, reloaded in its own tab
+    }
+
+    void ourOwnSaveSaysNothingAndEditsAreAskedAbout() {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("A.BDS"), "B\n");
+        MainWindow window;
+        window.show();
+        app::EditorArea* area = window.editorArea();
+        app::DiskChangeBar* bar = area->diskChangeBar();
+        QVERIFY(area->documents()->openFile(path));
+        editor::ProgramEditor* ed = window.editor();
+        QSignalSpy examined(area->diskWatcher(), &app::DiskWatcher::examined);
+
+        ed->append(QStringLiteral("J 1\n"));
+        area->documents()->save(); // written by ServoDesk: looked at, found to be ours, nothing asked
+        QTRY_VERIFY_WITH_TIMEOUT(!examined.isEmpty(), kTimeoutMs);
+        for (const QList<QVariant>& look : std::as_const(examined))
+            QCOMPARE(look.at(1).value<app::DiskWatcher::Outcome>(), app::DiskWatcher::Outcome::Unchanged);
+        QVERIFY(!bar->isVisible());
+        QCOMPARE(ed->text(), QStringLiteral("B\nJ 1\n"));
+
+        // Another program writes the file while the tab has unsaved edits: asked, the edits stay.
+        ed->append(QStringLiteral("J 2\n"));
+        writeFile(dir, QStringLiteral("A.BDS"), "P \"OTHER\"\n");
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), kTimeoutMs);
+        QVERIFY2(bar->message().contains(QStringLiteral("A.BDS")) &&
+                     bar->message().contains(QStringLiteral("unsaved edits")),
+                 qPrintable(bar->message()));
+        QCOMPARE(ed->text(), QStringLiteral("B\nJ 1\nJ 2\n"));
+        QVERIFY(ed->isModified());
+        QTest::mouseClick(bar->keepButton(), Qt::LeftButton); // Keep My Edits
+        QVERIFY(!bar->isVisible());
+        QCOMPARE(ed->text(), QStringLiteral("B\nJ 1\nJ 2\n"));
+        QVERIFY(ed->isModified());
+        QCOMPARE(readAll(path), QByteArray("P \"OTHER\"\n")); // nothing written
+
+        // Changed again: asked again; Reload shows the disk's text.
+        QVERIFY(saveAtomically(path, "P \"THIRD\"\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), kTimeoutMs);
+        QCOMPARE(ed->text(), QStringLiteral("B\nJ 1\nJ 2\n"));
+        QTest::mouseClick(bar->reloadButton(), Qt::LeftButton);
+        QCOMPARE(ed->text(), QStringLiteral("P \"THIRD\"\n"));
+        QVERIFY(!ed->isModified());
+        QVERIFY(!bar->isVisible());
+
+        // Asked, the user saves instead: the tab's text is on disk and the question goes.
+        ed->append(QStringLiteral("J 9\n"));
+        QVERIFY(saveAtomically(path, "P \"FOURTH\"\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), kTimeoutMs);
+        area->documents()->save();
+        QVERIFY(!bar->isVisible());
+        QCOMPARE(readAll(path), QByteArray("P \"THIRD\"\nJ 9\n"));
+    }
+
+    void openingAnOpenFileAgainShowsTheDiskOrAsks() {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("A.BDS"), "B\n");
+        MainWindow window;
+        window.show();
+        app::EditorArea* area = window.editorArea();
+        app::DiskChangeBar* bar = area->diskChangeBar();
+        QVERIFY(area->documents()->openFile(path));
+        editor::ProgramEditor* ed = window.editor();
+
+        // Unmodified: File > Open shows the disk's text at once, in the same tab.
+        writeFile(dir, QStringLiteral("A.BDS"), "J 7\n");
+        area->tabs()->setCurrentIndex(0);
+        QVERIFY(area->documents()->openFile(path));
+        QCOMPARE(window.editor(), ed);
+        QCOMPARE(ed->text(), QStringLiteral("J 7\n"));
+        QCOMPARE(area->tabs()->count(), 2);
+
+        // With edits: asked, nothing lost until the user chooses.
+        ed->append(QStringLiteral("J 8\n"));
+        QVERIFY(area->documents()->openFile(path));
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), kTimeoutMs);
+        QVERIFY2(bar->message().contains(QStringLiteral("already open")), qPrintable(bar->message()));
+        QCOMPARE(ed->text(), QStringLiteral("J 7\nJ 8\n"));
+        QTest::mouseClick(bar->reloadButton(), Qt::LeftButton);
+        QCOMPARE(ed->text(), QStringLiteral("J 7\n"));
+        QVERIFY(!ed->isModified());
+        QVERIFY(!bar->isVisible());
+    }
+
+    // A file that changed into one the editor refuses (item 7) is not loaded, in part or whole, on reload.
+    void aChangedFileTheEditorCannotShowLeavesTheTabAsItWas() {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("A.BDS"), "J 1\n");
+        MainWindow window;
+        window.show();
+        app::EditorArea* area = window.editorArea();
+        app::DiskChangeBar* bar = area->diskChangeBar();
+        QVERIFY(area->documents()->openFile(path));
+        editor::ProgramEditor* ed = window.editor();
+
+        writeFile(dir, QStringLiteral("A.BDS"), QByteArray("J 1\n\0\x01\x02", 7)); // binary now
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), kTimeoutMs);
+        QVERIFY2(bar->message().contains(QStringLiteral("not a text file")), qPrintable(bar->message()));
+        QCOMPARE(ed->text(), QStringLiteral("J 1\n"));
+        QVERIFY(!ed->isModified());
+        QCOMPARE(bar->keepButton()->text(), QStringLiteral("&Keep This Text"));
+        QTest::mouseClick(bar->keepButton(), Qt::LeftButton);
+        QVERIFY(!bar->isVisible());
+
+        writeFile(dir, QStringLiteral("A.BDS"), QByteArray(2 << 20, 'J')); // larger than any drive program
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), kTimeoutMs);
+        QVERIFY2(bar->message().contains(QStringLiteral("more than any drive program")), qPrintable(bar->message()));
+        QCOMPARE(ed->text(), QStringLiteral("J 1\n"));
+
+        writeFile(dir, QStringLiteral("A.BDS"), "J 2\n"); // text again: shown, and the question goes
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QStringLiteral("J 2\n"), kTimeoutMs);
+        QVERIFY(!bar->isVisible());
     }
 
 private:

@@ -1,23 +1,29 @@
 // Choosing the drive family: the main window hands a non-BDS5 choice to that family's workspace, which
 // reaches the family's simulated drive over its own link (a PMC-960 answers a CR with its "}" prompt),
-// shows its menus instead of the BDS5's, and gives the port back when the user returns to the BDS5. The
-// choice survives in the settings and on the command line.
+// shows its menus instead of the BDS5's, and gives the port back when the user returns to the BDS5; nothing
+// the BDS5 was still sending reaches the terminal after the switch. The choice survives in the settings and on
+// the command line.
 #include "app/command_line.h"
 #include "app/drive/connection_choice.h"
 #include "app/drive/connection_dialog.h"
 #include "app/drive/drive_connection.h"
 #include "app/drive/family_workspace.h"
+#include "app/drive/terminal_widget.h"
 #include "app/main_window.h"
+#include "app/sc750/sc750_workspace.h"
 
 #include <QComboBox>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTest>
+#include <QTimer>
 
+#include <memory>
 #include <optional>
 
 using app::ConnectionChoice;
@@ -113,6 +119,39 @@ private slots:
         QCOMPARE(menuVisible(window, QStringLiteral("&Program")), true);
         QCOMPARE(menuVisible(window, QStringLiteral("&Probe")), false);
         QTRY_VERIFY_WITH_TIMEOUT(bds5Ready(window), kTimeoutMs);
+    }
+
+    // Issue 19: what the BDS5 still had on its way when the user switched to the SC750 stays out of the
+    // terminal. (The setup wizard's BDS5 Modes page reads "P PL PROP TQ GEAR EXTLOOP RAMP ROTARY ZERO" without
+    // showing it; the tail of that echo, queued before the link closed, was delivered after and shown: " RAMP".)
+    void aLateBds5AnswerStaysOutOfTheTerminal() {
+        app::MainWindow window;
+        window.connectDrive(ConnectionChoice::simulator());
+        window.show();
+        QTRY_VERIFY_WITH_TIMEOUT(bds5Ready(window), kTimeoutMs);
+        // The answer streams in at 9600 baud, about a character a millisecond. Once its first bytes are in, the
+        // switch comes from the event loop, as a click would; what the drive sends meanwhile is still queued.
+        std::optional<QSignalSpy> late;
+        bool switched = false;
+        auto first = std::make_shared<QMetaObject::Connection>();
+        *first = connect(&window.connection(), &app::DriveConnection::rawReceived, &window, [&, first] {
+            disconnect(*first);
+            QTimer::singleShot(0, &window, [&] {
+                window.connectDrive(ConnectionChoice::simulator(DriveFamily::Sc750));
+                late.emplace(&window.connection(), &app::DriveConnection::rawReceived);
+                switched = true;
+            });
+        });
+        window.connection().session()->send(QStringLiteral("P PL PROP TQ GEAR EXTLOOP RAMP ROTARY ZERO"),
+                                            serialport::Bds5Session::Echo::Quiet);
+        QTRY_VERIFY_WITH_TIMEOUT(switched, kTimeoutMs);
+        // Long after anything queued before the switch: the SC750 has answered the version query.
+        const auto* sc750 = static_cast<const app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        QTRY_VERIFY_WITH_TIMEOUT(sc750->statusText().contains(QStringLiteral("SC75")), kTimeoutMs);
+        QCOMPARE(late->count(), 0); // nothing from the closed BDS5 link
+        const QString shown = window.terminal()->text();
+        for (const char* word : {"PROP", "EXTLOOP", "RAMP", "ROTARY", "ZERO"})
+            QVERIFY2(!shown.contains(QLatin1String(word)), qPrintable(shown));
     }
 
     void theFamilyIsRememberedAndChosenInTheDialog() {

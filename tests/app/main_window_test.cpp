@@ -109,7 +109,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(terminalLines(window).last() == kPrompt && driveReady(window),
                                  kDriveTimeoutMs);
         QCOMPARE(labelText(window, "linkLabel"), QStringLiteral("Simulated BDS5"));
-        QCOMPARE(labelText(window, "portLabel"), QStringLiteral("Simulated BDS5, 9600 baud"));
+        QCOMPARE(labelText(window, "portLabel"), QStringLiteral("9600 baud")); // "Simulated BDS5" once, not twice
         QVERIFY2(labelText(window, "modeLabel").contains(QStringLiteral("Interactive -->")),
                  qPrintable(labelText(window, "modeLabel")));
         QVERIFY(labelText(window, "stateLabel").contains(QStringLiteral("Ready")));

@@ -3,8 +3,10 @@
 // program too big for the buffer gets the controller's #C1 with its line; the status panel follows a move;
 // the parameter table shows stored vs in-use values and an edit reaches the controller; .mpl tabs use MPL;
 // Stop during a download cancels it; MPL > Run Routine lists the editor's labels and runs one, enabling the
-// servo first if asked, and a refusal says the program in the drive may differ.
+// servo first if asked, and a refusal says the program in the drive may differ; the status panel follows a
+// running routine, and an error inside one names the failing command and its line (issue 19).
 #include "app/drive/terminal_widget.h"
+#include "app/errors/error_log_dock.h"
 #include "app/errors/error_source.h"
 #include "app/main_window.h"
 #include "app/pmc960/mpl_language.h"
@@ -260,10 +262,10 @@ private slots:
                                   kTimeoutMs);
     }
 
-    // A routine the controller refuses: with the servo off (SM0) and "Enable the servo first" left unticked,
-    // H's move gets #B6, and the status bar, the Terminal and the error log say so, with the hint that the
-    // program in the drive may differ from the editor and how to download it. A program without labels
-    // offers nothing to run.
+    // A routine the controller refuses: the editor's program has a label the drive's does not (the drive holds
+    // the program downloaded before), so B<label> gets #C2, and the status bar, the Terminal and the error log
+    // say so, with the hint that the program in the drive may differ from the editor and how to download it.
+    // A program without labels offers nothing to run.
     void aRefusedRoutineSaysTheProgramInTheDriveMayDiffer() {
         MainWindow window;
         window.show();
@@ -284,31 +286,128 @@ private slots:
 
         newMplTab(window, QStringLiteral("turn.mpl"), QStringLiteral("@H_Half_a_turn\nI2048+,\nG!\nE\n"));
         QVERIFY(downloadCurrentTab(ws));
+        newMplTab(window, QStringLiteral("kick.mpl"), QStringLiteral("@K_Kick\nI100+\nE\n")); // not downloaded
         QTRY_VERIFY_WITH_TIMEOUT(ws.statusDock()->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")),
                                  kTimeoutMs);
         app::Pmc960RunDialog* dialog = openRunRoutine(window, ws);
         QVERIFY(dialog);
-        QCOMPARE(itemTexts(dialog->list()), QStringList(QStringLiteral("H  Half a turn")));
+        QCOMPARE(itemTexts(dialog->list()), QStringList(QStringLiteral("K  Kick")));
         QVERIFY(dialog->servoNote().contains(QStringLiteral("SM0")));
         QVERIFY(!dialog->enableServoFirst()->isChecked());
         QSignalSpy finished(&ws.runner(), &app::Pmc960RoutineRunner::finished);
         QTest::mouseClick(dialog->runButton(), Qt::LeftButton);
 
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kRunTimeoutMs);
-        QCOMPARE(finished.at(0).at(1).toInt(), 0xB6);
+        QCOMPARE(finished.at(0).at(1).toInt(), 0xC2);
         const QString said = ws.runner().lastMessage();
-        QVERIFY2(said.contains(QStringLiteral("#B6")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("refused routine K (BK)")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("#C2")), qPrintable(said));
         QVERIFY2(said.contains(QStringLiteral("may differ from the editor")), qPrintable(said));
         QVERIFY2(said.contains(QStringLiteral("MPL > Download Program, Shift+F5")), qPrintable(said));
-        QVERIFY2(said.contains(QStringLiteral("Enable the servo first (SM2)")), qPrintable(said));
         // Where the user looks: the status bar, the Terminal, the error log.
         QTRY_COMPARE_WITH_TIMEOUT(window.statusBar()->currentMessage(), said, kTimeoutMs);
         QTRY_VERIFY2_WITH_TIMEOUT(window.terminal()->text().contains(QStringLiteral("may differ from the editor")),
                                   qPrintable(window.terminal()->text()), kTimeoutMs);
         const app::ErrorLogModel& log = ws.errorSource()->model();
         QTRY_VERIFY_WITH_TIMEOUT(log.rowCount() > 0, kTimeoutMs);
-        QCOMPARE(log.entry(0).codeText, QStringLiteral("#B6"));
+        QCOMPARE(log.entry(0).codeText, QStringLiteral("#C2"));
+        QCOMPARE(log.entry(0).detail, QStringLiteral("BK"));
         QVERIFY(!ws.runner().isRunning());
+    }
+
+    // Issue 19: a routine that stops on an error inside its program was blamed on the B<label> that started it,
+    // with no line. The controller prints only #B6; its SB& (the last label passed, the commands since) followed
+    // through the downloaded program names the command that failed and its line — here after a called routine
+    // returned, past an empty line the download leaves out — in the status bar, the Terminal and the error log,
+    // whose row a double-click shows in the program's editor; and so when BH is typed in the Terminal.
+    void aProgramErrorNamesTheFailingCommandAndItsLine() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected() && ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+        editor::ProgramEditor* program =
+            newMplTab(window, QStringLiteral("turn.mpl"),
+                      QStringLiteral("@H_Half_a_turn\nFS\n\nI2048+,\nG!\nE\n@S_Set_up\nA4000\nE\n"));
+        QVERIFY(downloadCurrentTab(ws));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.statusDock()->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")),
+                                 kTimeoutMs);
+        QSignalSpy finished(&ws.runner(), &app::Pmc960RoutineRunner::finished);
+        ws.runner().run(QLatin1Char('H'), false); // the servo left off: I2048+, is refused
+
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kRunTimeoutMs);
+        QCOMPARE(finished.at(0).at(0).value<QChar>(), QLatin1Char('H'));
+        QCOMPARE(finished.at(0).at(1).toInt(), 0xB6);
+        const QString said = ws.runner().lastMessage();
+        QVERIFY2(said.startsWith(QStringLiteral("Error: routine H stopped at line 4, I2048+, (SB& S 1")),
+                 qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("#B6 Servodrive not enabled")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("Enable the servo first (SM2)")), qPrintable(said));
+        QVERIFY2(!said.contains(QStringLiteral("may differ")), qPrintable(said)); // the drive holds this program
+        QTRY_COMPARE_WITH_TIMEOUT(window.statusBar()->currentMessage(), said, kTimeoutMs);
+        QTRY_VERIFY2_WITH_TIMEOUT(window.terminal()->text().contains(QStringLiteral("stopped at line 4, I2048+,")),
+                                  qPrintable(window.terminal()->text()), kTimeoutMs);
+
+        app::ErrorLogDock& dock = *window.errorLogDock();
+        const app::ErrorLogModel& log = dock.model();
+        QTRY_VERIFY_WITH_TIMEOUT(log.rowCount() > 0, kTimeoutMs);
+        QCOMPARE(log.rowCount(), 1); // one row for the error, not another for BH
+        QCOMPARE(log.index(0, app::ErrorLogModel::Code).data().toString(), QStringLiteral("#B6"));
+        QCOMPARE(log.index(0, app::ErrorLogModel::Message).data().toString(),
+                 QStringLiteral("Servodrive not enabled 'I2048+, in routine H'"));
+        QCOMPARE(log.index(0, app::ErrorLogModel::Line).data().toString(), QStringLiteral("4"));
+
+        // Another tab is current and the cursor elsewhere: activating the row shows line 4 of the program.
+        newMplTab(window, QStringLiteral("other.mpl"), QString());
+        QVERIFY(window.editor() != program);
+        program->setCursorPosition(0, 0);
+        emit dock.view()->activated(log.index(0, app::ErrorLogModel::Line));
+        QCOMPARE(window.editor(), program);
+        int line = -1, index = -1;
+        program->getCursorPosition(&line, &index);
+        QCOMPARE(line + 1, 4);
+
+        // BH typed in the Terminal, as hello.mpl says to run a routine: placed the same, not blamed on BH.
+        app::TerminalWidget* terminal = window.terminal();
+        terminal->setFocus();
+        QTest::keyClicks(terminal, QStringLiteral("BH"));
+        QTest::keyClick(terminal, Qt::Key_Return);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, kRunTimeoutMs);
+        QCOMPARE(finished.at(1).at(1).toInt(), 0xB6);
+        QTRY_COMPARE_WITH_TIMEOUT(log.rowCount(), 2, kTimeoutMs);
+        QCOMPARE(log.index(0, app::ErrorLogModel::Message).data().toString(),
+                 QStringLiteral("Servodrive not enabled 'I2048+, in routine H'"));
+        QCOMPARE(log.index(0, app::ErrorLogModel::Line).data().toString(), QStringLiteral("4"));
+        QVERIFY2(ws.runner().lastMessage().startsWith(QStringLiteral("Error: routine H stopped at line 4, I2048+,")),
+                 qPrintable(ws.runner().lastMessage()));
+    }
+
+    // Issue 19: the status panel froze while a routine ran — position and velocity stayed put until the prompt
+    // came back. Its polls go on during the routine: while MPL > Run Routine's B<label> still runs, the position
+    // climbs and the velocity shows.
+    void statusPanelFollowsARunningRoutine() {
+        MainWindow window;
+        window.show();
+        Pmc960Workspace& ws = connectPmc960(window);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected() && ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
+        app::Pmc960StatusDock* status = ws.statusDock();
+        QTRY_COMPARE_WITH_TIMEOUT(status->value(QStringLiteral("position")), QStringLiteral("0"), kTimeoutMs);
+        newMplTab(window, QStringLiteral("move.mpl"),
+                  QStringLiteral("@M_Ten_turns_slowly\nSM2\nA4000\nV100\nI40960+,\nG!\nE\n")); // about 4 s
+        QVERIFY(downloadCurrentTab(ws));
+        QSignalSpy finished(&ws.runner(), &app::Pmc960RoutineRunner::finished);
+        ws.runner().run(QLatin1Char('M'), false);
+        QVERIFY(ws.runner().isRunning());
+        auto position = [status] { return status->value(QStringLiteral("position")).toInt(); };
+        QTRY_VERIFY_WITH_TIMEOUT(ws.runner().isRunning() && position() > 0, kRunTimeoutMs);
+        const int first = position();
+        QTRY_VERIFY_WITH_TIMEOUT(ws.runner().isRunning() && position() > first, kRunTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.runner().isRunning() && status->value(QStringLiteral("velocity")).toInt() > 0,
+                                 kRunTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kRunTimeoutMs);
+        QCOMPARE(finished.at(0).at(1).toInt(), 0);
+        QVERIFY2(ws.runner().lastMessage().contains(QStringLiteral("Routine M ended")),
+                 qPrintable(ws.runner().lastMessage()));
+        QTRY_VERIFY_WITH_TIMEOUT(position() > 40000, kTimeoutMs);
     }
 
     void statusPanelFollowsAMove() {

@@ -1,7 +1,8 @@
 // Motion Dialogue in the real MainWindow against the simulated SC750 (issue 8): the family's menus replace
 // the BDS5's; Compile marks the first error's line; Run downloads and runs a manual example whose PRINT
 // text reaches the Output window; a breakpoint stops it with its line marked; a variable is read and
-// changed while stopped; Continue resumes; Ctrl C in the editor stops; ServoBASIC colours and F1 help.
+// changed while stopped, and the watched ones read again at every stop; Continue resumes; Ctrl C in the editor
+// stops; switching family takes the execution arrow away; ServoBASIC colours and F1 help.
 #include "app/main_window.h"
 #include "app/sc750/sc750_controller_menu.h"
 #include "app/sc750/sc750_debugger.h"
@@ -215,6 +216,56 @@ private slots:
         ws.debugger().continueProgram();
         QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::Ended, kTimeoutMs);
         QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().contains(QStringLiteral("Count is 7")), kTimeoutMs);
+    }
+
+    // Issue 19: the watch list is read again whenever the program stops, so at a breakpoint it shows the
+    // controller's values there, not those read before the program ran.
+    void watchedValuesAreReadAtEachBreakpoint() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 0\nAgain:\n"
+                                                                 "Count = Count + 1\nPRINT \"Count is\"; Count\n"
+                                                                 "GOTO Again\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::Sc750VariablesDock* vars = ws.variablesDock();
+        // Watched before the program is on the controller, which does not know COUNT yet.
+        vars->readVariable(QStringLiteral("Count"));
+        QTRY_VERIFY_WITH_TIMEOUT(vars->lastMessage().startsWith(QStringLiteral("COUNT: ")), kTimeoutMs);
+        QCOMPARE(vars->value(QStringLiteral("COUNT")), QString());
+        ws.debugger().toggleBreakpointAt(*window.editor(), 4); // the PRINT
+        ws.debugger().run();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(vars->value(QStringLiteral("COUNT")), QStringLiteral("1"), kTimeoutMs);
+        // Continue: one pass of the loop, the breakpoint again, and the watch follows without a Refresh.
+        ws.debugger().continueProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(ws.outputDock()->text().contains(QStringLiteral("Count is 1")), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(vars->value(QStringLiteral("COUNT")), QStringLiteral("2"), kTimeoutMs);
+        QCOMPARE(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint);
+        QCOMPARE(vars->table()->rowCount(), 1);
+    }
+
+    // Issue 19: the execution arrow belongs to the SC750's session. Switching to the PMC-960 while the program
+    // is stopped at a breakpoint takes it, and the current-line band, out of the editor the PMC-960 then
+    // shows; the user's breakpoint stays.
+    void switchingFamilyClearsTheExecutionArrow() {
+        MainWindow window;
+        window.show();
+        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\n"
+                                                                 "PRINT \"Count is\"; Count\nEND\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        editor::ProgramEditor* program = window.editor();
+        ws.debugger().toggleBreakpointAt(*program, 2); // the PRINT
+        ws.debugger().run();
+        QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), Sc750Debugger::State::AtBreakpoint, kTimeoutMs);
+        const int arrow = (1 << Sc750Debugger::kArrowMarker) | (1 << Sc750Debugger::kCurrentLineMarker);
+        QCOMPARE(program->markerFindNext(0, arrow), 2);
+
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
+        QCOMPARE(window.activeFamily(), DriveFamily::Pmc960);
+        QCOMPARE(window.editor(), program); // the PMC-960 shows the same tab
+        QCOMPARE(program->markerFindNext(0, arrow), -1);
+        QCOMPARE(ws.debugger().currentLine(), -1);
+        QCOMPARE(program->markerFindNext(0, 1 << Sc750Debugger::kBreakpointMarker), 2);
     }
 
     void controllerSetUpAndUnconfigure() {

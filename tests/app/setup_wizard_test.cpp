@@ -2,7 +2,8 @@
 // the drive, an edit on each page is held (nothing sent) until Send Variables, then reaches the drive and
 // reads back; the changes save as .VAR; the output test toggles an output at once; the Communicate and Drive
 // Feedback readouts show the drive's answers, the units page previews the conversion as a user types, and the
-// Motor Setup page swaps the simulated motor (its ICONT read anew, the I/O panel showing the same motor).
+// Motor Setup page swaps the simulated motor (its ICONT read anew, the I/O panel showing the same motor). Every
+// page shows "Step N of M" in the same header.
 #include "app/drive/drive_connection.h"
 #include "app/io/io_panel.h"
 #include "app/main_window.h"
@@ -21,6 +22,8 @@
 
 #include <QComboBox>
 #include <QFile>
+#include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -63,6 +66,13 @@ QString nextValue(const QString& name, const QString& value, const app::Variable
     return QString::number(up);
 }
 
+// The wizard's own label (not one of the page's) that shows text, if one is visible.
+const QLabel* wizardLabel(const QWizard& wizard, const QString& text) {
+    for (const QLabel* label : wizard.findChildren<QLabel*>())
+        if (label->isVisible() && label->text() == text && !wizard.currentPage()->isAncestorOf(label)) return label;
+    return nullptr;
+}
+
 bool isSwitch(const QString& name) {
     const QByteArray n = name.toLatin1();
     return drive_core::catalog::bds5::findVariable(std::string_view(n.constData(), std::size_t(n.size())))
@@ -99,6 +109,14 @@ private slots:
                                                             !wizard.model().value(n).isEmpty();
                                                  }),
                                      kDriveTimeoutMs);
+            // Issue 19, item 11: AMAX's field showed "00000" of 3000000. Every value is whole in its field.
+            for (const QLineEdit* field : page->findChildren<QLineEdit*>()) {
+                if (field->text().isEmpty()) continue;
+                const int needed = field->fontMetrics().horizontalAdvance(field->text());
+                QTRY_VERIFY2(field->contentsRect().width() > needed,
+                             qPrintable(QStringLiteral("%1: %2 px for %3 px").arg(field->text()).arg(
+                                 field->contentsRect().width()).arg(needed)));
+            }
             QString name;
             for (const QString& n : page->names())
                 if (writable(n) && !kRisky.contains(n) && !wizard.model().value(n).isEmpty() && !chosen.contains(n)) {
@@ -138,6 +156,29 @@ private slots:
             QTRY_COMPARE_WITH_TIMEOUT(wizard.model().value(it.key()), it.value(), kDriveTimeoutMs); // read back
         }
         QVERIFY(wizard.changes().changedNames().isEmpty());
+    }
+
+    // Issue 19: every page says where it is, "Step N of M", in the one header QWizard draws for a page with a
+    // subtitle. (The bench pages had none, and QWizard showed their titles in the page body, in another style.)
+    void everyPageSaysItsStepUnderOneHeader() {
+        app::DriveConnection connection; // not connected: only the pages' headers are looked at
+        app::SetupWizard wizard(connection);
+        wizard.show();
+        const QList<int> ids = wizard.pageIds();
+        const QWidget* header = nullptr;
+        for (qsizetype i = 0; i < ids.size(); ++i) {
+            while (wizard.currentId() != ids[i]) wizard.next();
+            const QWizardPage* page = wizard.currentPage();
+            const QString step = QStringLiteral("Step %1 of %2").arg(i + 1).arg(ids.size());
+            QVERIFY2(page->subTitle().startsWith(step), qPrintable(page->title() + ": " + page->subTitle()));
+            const QLabel* title = wizardLabel(wizard, page->title());
+            const QLabel* subTitle = wizardLabel(wizard, page->subTitle());
+            QVERIFY2(title && subTitle, qPrintable(page->title()));
+            if (!header) header = title->parentWidget();
+            QVERIFY2(title->parentWidget() == header && subTitle->parentWidget() == header, qPrintable(page->title()));
+        }
+        QCOMPARE(wizard.currentPage(), wizard.summaryPage());
+        QVERIFY(wizard.summaryPage()->subTitle().startsWith(QStringLiteral("Step 15 of 15 \u2014 ")));
     }
 
     void theOutputTestSwitchesAnOutputAtOnce() {

@@ -1,8 +1,10 @@
 // The tuning panel's test-move presets against the simulated BDS5: the amplitude proposed from the drive's
 // values keeps ICMD below ILIM (no warning), a deliberately larger step drives ICMD into ILIM and the panel
-// warns, and the position-step preset moves by its amplitude and back, as the recorded PCMD and PFB show.
+// warns, the position-step preset moves by its amplitude and back, as the recorded PCMD and PFB show, and the
+// amplitude, once proposed, stays while the gains change (issue 19: runs compared one move).
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
+#include "app/scope/gain_editor.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
 #include "app/scope/tuning_panel.h"
@@ -104,13 +106,14 @@ private slots:
         // the peak below the formula's worst case of a command faster than the loop.)
         QVERIFY2(icmd1 >= 0.15 * kIlim && icmd1 < 0.9 * kIlim, qPrintable(QString::number(icmd1)));
 
-        // ILIM halved: the Amplitude field follows the proposal, which halves too.
+        // ILIM halved: the proposal halves too, the Amplitude field keeps the move the run was made with.
         QSignalSpy confirmed(&w.panel->runner(), &app::TuningRunner::gainConfirmed);
         w.panel->runner().setGain(QStringLiteral("ILIM"), kIlim / 2);
         QVERIFY(confirmed.wait(kDriveTimeoutMs));
         const int halved = w.panel->proposedAmplitude();
         QVERIFY2(std::abs(2 * halved - proposed) <= 1, qPrintable(QString::number(halved)));
-        QCOMPARE(amplitude->value(), halved);
+        QCOMPARE(amplitude->value(), proposed);
+        QVERIFY(w.panel->proposalText().contains(QString::number(halved)));
 
         // The user types a step eight times that: ICMD reaches ILIM and the panel says so.
         amplitude->setValue(8 * halved);
@@ -126,6 +129,38 @@ private slots:
         QCOMPARE(amplitude->value(), 8 * halved);
         w.panel->useProposedAmplitude();
         QCOMPARE(amplitude->value(), halved);
+    }
+
+    // Proposed once, then kept: KV and ILIM changes (and reading the drive's values again) move the "Proposed:"
+    // line, not the move, so that every run's overlay is the same J; Propose takes the new value.
+    void amplitudeIsProposedOnceAndKeptWhileGainsChange() {
+        Window w;
+        QVERIFY(w.ready());
+        QSpinBox* amplitude = w.amplitudeField();
+        QVERIFY(amplitude);
+        w.panel->useProposedAmplitude();
+        const int taken = amplitude->value();
+        QCOMPARE(taken, w.panel->proposedAmplitude());
+        const QString move = w.panel->runner().testMove().description();
+        QVERIFY2(move.startsWith(QStringLiteral("J %1 ").arg(taken)), qPrintable(move));
+
+        QSignalSpy confirmed(&w.panel->runner(), &app::TuningRunner::gainConfirmed);
+        w.panel->gainEditor(QStringLiteral("KV"))->spinBox()->setValue(4000); // as the user tunes
+        QVERIFY(confirmed.wait(kDriveTimeoutMs));
+        w.panel->runner().setGain(QStringLiteral("ILIM"), kIlim / 2);
+        QVERIFY(confirmed.wait(kDriveTimeoutMs));
+        QSignalSpy values(&w.panel->runner(), &app::TuningRunner::driveValuesRead);
+        w.panel->runner().readGains();
+        QVERIFY(values.wait(kDriveTimeoutMs));
+        const int now = w.panel->proposedAmplitude();
+        QVERIFY2(now < taken / 2, qPrintable(QStringLiteral("%1 %2").arg(now).arg(taken))); // KV x2, ILIM / 2
+        QVERIFY(w.panel->proposalText().contains(QString::number(now)));
+        QCOMPARE(amplitude->value(), taken);
+        QCOMPARE(w.panel->runner().testMove().description(), move);
+
+        w.panel->useProposedAmplitude();
+        QCOMPARE(amplitude->value(), now);
+        QCOMPARE(w.panel->runner().testMove().amplitude, now);
     }
 
     void positionStepMovesByItsAmplitudeAndBack() {

@@ -45,7 +45,13 @@ TEST(Bds5Catalog, IndexedUserVariablesResolve) {
     ASSERT_TRUE(x12);
     EXPECT_EQ(x12->info->name, "X");
     EXPECT_EQ(x12->index, 12);
-    EXPECT_FALSE(cat::findVariable("X251"));
+    // v3: X251-X750 resolve (the drive decides with EXTDX whether they exist, L9309); nothing past X750.
+    const auto x251 = cat::findVariable("X251");
+    ASSERT_TRUE(x251);
+    EXPECT_EQ(x251->info, x12->info);
+    EXPECT_EQ(x251->index, 251);
+    EXPECT_TRUE(cat::findVariable("X750"));
+    EXPECT_FALSE(cat::findVariable("X751"));
     EXPECT_FALSE(cat::findVariable("X0"));
     auto xs3 = cat::findVariable("XS3");
     ASSERT_TRUE(xs3);
@@ -251,17 +257,26 @@ TEST(Bds5CatalogVariables, CountsAndUniqueNames) {
 }
 
 TEST(Bds5CatalogVariables, FamiliesResolveWithTheirIndexRange) {
-    const std::pair<std::string_view, int> families[] = {{"X", 250}, {"XS", 50}, {"I", 16},
-                                                         {"O", 8},   {"TMR", 4}, {"A", 16}};
-    for (const auto& [stem, last] : families) {
+    // Table E.1's ranges; X alone is extended, by v3's EXTDX to X750 (L9309).
+    struct Family {
+        std::string_view stem;
+        int last;
+        int extendedLast;
+    };
+    const Family families[] = {{"X", 250, 750}, {"XS", 50, 0}, {"I", 16, 0}, {"O", 8, 0}, {"TMR", 4, 0}, {"A", 16, 0}};
+    for (const auto& [stem, last, extendedLast] : families) {
         SCOPED_TRACE(std::string(stem));
         const auto first = cat::findVariable(std::string(stem) + "1");
         ASSERT_TRUE(first);
         EXPECT_EQ(first->info->name, stem);
         EXPECT_EQ(first->info->firstIndex, 1);
         EXPECT_EQ(first->info->lastIndex, last);
-        EXPECT_TRUE(cat::findVariable(std::string(stem) + std::to_string(last)));
-        EXPECT_FALSE(cat::findVariable(std::string(stem) + std::to_string(last + 1)));
+        EXPECT_EQ(first->info->extendedLastIndex, extendedLast);
+        EXPECT_EQ(first->info->extendedBy, extendedLast ? "EXTDX" : "");
+        const int highest = extendedLast ? extendedLast : last;
+        EXPECT_EQ(cat::highestIndex(*first->info), highest);
+        EXPECT_TRUE(cat::findVariable(std::string(stem) + std::to_string(highest)));
+        EXPECT_FALSE(cat::findVariable(std::string(stem) + std::to_string(highest + 1)));
         EXPECT_FALSE(cat::findVariable(stem)) << "a family needs an index";
     }
     const auto tmr2 = cat::findVariable("TMR2");

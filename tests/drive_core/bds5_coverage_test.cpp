@@ -251,10 +251,18 @@ const std::map<std::string, std::string> kSample = {{";", "; COMMENT"},
                                                     {"TPLAY", "TPLAY"}};
 } // namespace
 
+namespace {
+// The catalog's commands the simulated drive does not carry out (it answers ERR 80, as for an unknown word),
+// each with the reason. None at present: every command of App. B and the v3.0.0 notice runs. A command
+// added to the catalog before the drive learns it goes here, by name, with its reason.
+const std::map<std::string, std::string> kNotSimulated = {};
+} // namespace
+
 TEST(Bds5Coverage, CommandFigures) {
     int implemented = 0;
     int total = 0;
     std::string notYet;
+    std::map<std::string, std::string> notSimulated;
     for (const cat::CommandInfo& c : cat::commands()) {
         if (c.modes == cat::kEditor) continue; // editor commands: bds5_resident_editor_test
         ++total;
@@ -268,14 +276,18 @@ TEST(Bds5Coverage, CommandFigures) {
             t.download({"1$", sample->second, "B"});
             out = t.type("RUN 1\r", 20ms);
         }
-        if (out.find("ERR 80 ") == std::string::npos)
+        if (out.find("ERR 80 ") == std::string::npos) {
             ++implemented;
-        else
+        } else {
             notYet += " " + std::string(c.name);
+            const auto known = kNotSimulated.find(std::string(c.name));
+            notSimulated[std::string(c.name)] = known == kNotSimulated.end() ? "(no reason given)" : known->second;
+        }
     }
     std::printf("BDS5 commands: %d of %d simulated (plus the 8 editor commands); not yet:%s\n", implemented, total,
                 notYet.c_str());
-    EXPECT_GE(implemented, total - 3);
+    EXPECT_EQ(notSimulated, kNotSimulated) << "the commands answering ERR 80 are not the listed ones";
+    EXPECT_EQ(implemented, total - int(kNotSimulated.size()));
 }
 
 TEST(Bds5Coverage, VariableFigures) {

@@ -1,6 +1,7 @@
 // The manual's example programs (spec §10), repaired as the digest's INDEX says, downloaded with >BDS and
 // run: the drive prints what the manual prints. Motion examples run on the simulated motor and loops, so
-// PFB trails PCMD by the following error; their timing-dependent outcomes are checked loosely and marked.
+// PFB trails PCMD by the following error. Where the manual leaves the count of a repeated line open, it is
+// held between bounds worked out in the test from the manual's figures (9600 baud, Appendix F's times).
 #include "bds5_test_drive.h"
 
 #include <fstream>
@@ -92,7 +93,15 @@ TEST(Bds5Examples, Refresh7) { // L4367-4369: RS overwrites one line with CR onl
     TestDrive t;
     t.download(example("33-refresh-7.bds"));
     const std::string out = t.type("RUN 7\r", 300ms);
-    EXPECT_GE(count(out, "VELOCITY FEEDBACK=           0 OFF\r"), 3) << out;
+    // The manual gives no count; the port bounds it. A line is 35 characters ("VELOCITY FEEDBACK=", VFB in 12
+    // columns, " OFF", CR): 36.5 ms at 9600 baud, 10 bits a character (8N1). RS waits for the previous line
+    // to leave (L4637), then 7$, RS and GOTO take 1.0 + 3.8 + 1.6 ms (Appendix F, L7739-7774; at most 60 %
+    // more, L7735): a line starts every 36.5 to 47.7 ms (a millisecond for the port to be seen free) after
+    // the 7-character echo of RUN 7 (7.3 ms). Started within the 300 ms, and finished by type(): at most
+    // 1 + (300 - 7.3) / 36.5 = 9, at least 1 + (300 - 16) / 47.7 = 6.
+    const int lines = count(out, "VELOCITY FEEDBACK=           0 OFF\r");
+    EXPECT_GE(lines, 6) << out;
+    EXPECT_LE(lines, 9) << out;
     EXPECT_EQ(count(out, "\r\n"), 1) << "only the echo of RUN 7 ends with a line feed";
     t.type("\x18");
 }
@@ -131,8 +140,16 @@ TEST(Bds5Examples, PreExecutionIdle41) { // L4645-4687 (timing on the ideal foll
     ASSERT_NE(second, std::string::npos) << out;
     ASSERT_NE(third, std::string::npos) << out;
     EXPECT_EQ(out.find("FIRST MOVE PROCESSED\r\n"), out.find("\r\n") + 2) << out;
-    // While the third MI waits for room, the background prints every ~260 ms: about 14.6 s / 0.26 s.
-    EXPECT_GE(count(out.substr(second, third - second), "UPPER TASK IDLED"), 40) << out;
+    // The manual prints "..." for the count. While the third MI waits for the first move to end, the
+    // background prints every 250 ms (D 250) plus its lines' times: BACKGROUND$ 1.0, P 3.5 (Appendix F), D
+    // and END untimed there, taken at most its slowest line, 5.8 ms; all up to 60 % more (L7735): 250 to
+    // 275.8 ms. The wait lasts the first move, 10000 counts at 10 RPM = 682.7 counts/s (4096 counts a turn,
+    // L1386): 14.648 s, less at most 78 ms before it (the main task printing FIRST and SECOND, 22 and 23
+    // characters at 9600 baud, and its lines), plus at most 15 ms after it (the third MI and P). Prints: at
+    // most 1 + 14663 / 250 = 59, at least 1 + 14570 / 275.8 = 53.
+    const int idled = count(out.substr(second, third - second), "UPPER TASK IDLED");
+    EXPECT_GE(idled, 53) << out;
+    EXPECT_LE(idled, 59) << out;
 }
 
 TEST(Bds5Examples, PostExecutionIdle42) { // L4700-4750
@@ -143,7 +160,11 @@ TEST(Bds5Examples, PostExecutionIdle42) { // L4700-4750
     const auto moved = out.find("MOVE PROCESSED");
     const auto stopped = out.find("ALL MOTION STOPPED");
     ASSERT_NE(stopped, std::string::npos) << out;
-    EXPECT_GE(count(out.substr(moved, stopped - moved), "UPPER TASK IDLED"), 40) << out;
+    // As in PreExecutionIdle41: W 0 idles the main task for the 14.648 s move, the background prints every
+    // 250 to 275.8 ms: at most 1 + 14663 / 250 = 59 prints, at least 1 + 14570 / 275.8 = 53.
+    const int idled = count(out.substr(moved, stopped - moved), "UPPER TASK IDLED");
+    EXPECT_GE(idled, 53) << out;
+    EXPECT_LE(idled, 59) << out;
     EXPECT_TRUE(out.ends_with("ALL MOTION STOPPED\r\n-->")) << out;
 }
 
@@ -229,7 +250,14 @@ TEST(Bds5Examples, Timers53And54) { // L5790-5814
     TestDrive t;
     t.download(example("53-timer-8.bds", {{"1\nSECOND DELAY\"", "1 SECOND DELAY\""}}));
     const std::string out = t.type("RUN 8\r", 1200ms);
-    EXPECT_GE(count(out, "WAITING FOR 1 SECOND DELAY\r\n"), 20) << out;
+    // The manual gives no count. TIL prints while TMR1 counts its 1000 ms down (L5790-5800); each line is
+    // 28 characters, 29.2 ms at 9600 baud (8N1), and the next waits for it to leave (L4637), then TIL takes
+    // 2.6 ms (Appendix F; at most 60 % more, L7735) and a millisecond for the port to be seen free: a line
+    // every 29.2 to 34.3 ms, the first after RUN 8's echo (7.3 ms) and 8$, TMR1= and TIL (at most 16.8 ms).
+    // At most 1 + (1000 - 7.3) / 29.2 = 35 lines, at least 1 + (1000 - 16.8) / 34.3 = 29.
+    const int waiting = count(out, "WAITING FOR 1 SECOND DELAY\r\n");
+    EXPECT_GE(waiting, 29) << out;
+    EXPECT_LE(waiting, 35) << out;
     EXPECT_TRUE(out.ends_with("-->"));
     t.download(example("54-timer-9.bds"));
     EXPECT_EQ(t.type("RUN 9\r", 950ms), "RUN 9\r\n3 SECONDS\r\n");
@@ -244,7 +272,15 @@ TEST(Bds5Examples, SegmentWait56And58) { // L5857-5893 (ideal follower)
     t.type("EN\r");
     t.download(example("56-seg-wait-46a.bds", {{"MOTION IN\nPROGRESS\"", "MOTION IN PROGRESS\""}}));
     const std::string out = t.type("RUN 46\r", 2000ms);
-    EXPECT_GE(count(out, "MOTION IN PROGRESS\r\n"), 5) << out;
+    // The manual gives no count. MA 10000 1000 from 0 with ACC = DEC = 100000 RPM/s (L1519, L1528), the
+    // average rate of any S-curve (L2293): 1000 RPM = 68267 counts/s (4096 counts a turn) is reached in
+    // 10 ms over 341 counts, so 10 + 136.5 + 10 = 156.5 ms of motion.
+    // Each line is 20 characters, 20.8 ms at 9600 baud (8N1); the next waits for it (L4637), then TIL's
+    // 2.6 ms (Appendix F, up to 60 % more) and a millisecond: a line every 20.8 to 26.0 ms, the first at most
+    // ~15 ms into the move. At most 1 + 156.5 / 20.8 = 8 lines, at least 1 + (156.5 - 15) / 26.0 = 6.
+    const int lines = count(out, "MOTION IN PROGRESS\r\n");
+    EXPECT_GE(lines, 6) << out;
+    EXPECT_LE(lines, 8) << out;
     EXPECT_TRUE(out.ends_with("-->")) << out;
     t.download(example("58-seg-3-output-47.bds"));
     t.type("RUN 47\r", 3000ms);

@@ -7,13 +7,14 @@
 #include "serialport/pmc960_upload.h"
 #include "serialport/simulator_link.h"
 
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTest>
 
 using namespace serialport;
 
 namespace {
-// The controller's side played by the test: writes vanish, bytes arrive when delivered.
+// The controller's side played by the test: writes are kept, bytes arrive when delivered.
 class ScriptLink final : public Link {
 public:
     void open() override {
@@ -25,13 +26,15 @@ public:
         emit closed();
     }
     bool isOpen() const override { return m_open; }
-    void write(const QByteArray&) override {}
+    void write(const QByteArray& bytes) override { m_written += bytes; }
     QString description() const override { return QStringLiteral("script"); }
     int baudRate() const override { return 9600; }
     void deliver(const QByteArray& bytes) { emit bytesReceived(bytes); }
+    const QByteArray& written() const { return m_written; }
 
 private:
     bool m_open = false;
+    QByteArray m_written;
 };
 } // namespace
 
@@ -159,6 +162,111 @@ private slots:
             QVERIFY2(number, qPrintable(answer.at(2).toString()));
         }
         QVERIFY2(shown.contains("\r\n=}"), shown.constData()); // the stray prompt went to the terminal
+    }
+
+    // Issue 19: the status panel froze while a routine ran — the routine's B<label> is typed, its prompt comes
+    // only when it ends, and every poll waited for that prompt. Polls are answered at any time (5.3.3): they go
+    // on while the routine moves, and the routine's output and prompt still reach the terminal, unmixed.
+    void statusPollsGoOnWhileATypedRoutineRuns() {
+        SimulatorLink link{drive_core::DriveFamily::Pmc960, SimulatorLink::Options{1.0, 9600, true}};
+        Pmc960Session session{link};
+        link.open();
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
+        Pmc960Download download(session, QStringLiteral("@H_Move\nSM2\nA4000\nV400\nI100000+,\nG!\nE\n"));
+        QSignalSpy downloaded(&download, &Pmc960Download::done);
+        download.start();
+        QVERIFY(downloaded.wait(20000));
+        QVERIFY(downloaded.at(0).at(0).value<Pmc960DownloadResult>().ok);
+
+        QByteArray shown;
+        bool ended = false;
+        QStringList whileRunning;
+        connect(&session, &Pmc960Session::shownReceived, this, [&](const QByteArray& b) {
+            shown += b;
+            ended = shown.endsWith("\r\n=}");
+        });
+        connect(&session, &Pmc960Session::statusPolled, this, [&](char, const QString& value) {
+            if (!ended) whileRunning << value;
+        });
+        session.setStatusPolling(20, "g");
+        session.sendTyped("BH\r");
+        QTRY_VERIFY_WITH_TIMEOUT(ended, 30000); // 100,000 counts at 40,000 a second
+        session.setStatusPolling(0, {});
+        QVERIFY2(whileRunning.size() >= 3, qPrintable(whileRunning.join(QLatin1Char(' '))));
+        for (const QString& value : whileRunning) {
+            bool number = false;
+            value.toInt(&number);
+            QVERIFY2(number, qPrintable(value));
+        }
+        QVERIFY2(whileRunning.last().toInt() > whileRunning.first().toInt(),
+                 qPrintable(whileRunning.join(QLatin1Char(' '))));
+        // The terminal: the echo, G!'s position, the prompt — no poll answer among them.
+        QVERIFY2(QRegularExpression(QStringLiteral("^BH\\d+\r\n=\\}$")).match(QString::fromLatin1(shown)).hasMatch(),
+                 shown.constData());
+    }
+
+    // The bytes a routine sends while a poll is on the line are the terminal's: its closing #B6 and prompt (CR LF
+    // cut in two, as a serial line may deliver it) arrive before the poll's answer, are shown and reported,
+    // end the typed command, and let the queued command go; the answer is only the poll's.
+    void aRoutinesEndDuringAPollIsTheTerminals() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        link.open();
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
+        QByteArray shown;
+        connect(&session, &Pmc960Session::shownReceived, this, [&shown](const QByteArray& b) { shown += b; });
+        QSignalSpy polled(&session, &Pmc960Session::statusPolled);
+        QSignalSpy errors(&session, &Pmc960Session::asyncError);
+        QSignalSpy finished(&session, &Pmc960Session::finished);
+        session.setStatusPolling(10, "g");
+        session.sendTyped("BH\r");
+        link.deliver("BH"); // the echo; the routine runs
+        session.send("A?"); // waits for the routine's prompt
+
+        // The line is quiet: a poll cuts in.
+        QTRY_VERIFY_WITH_TIMEOUT(link.written().endsWith("\x1dg"), 5000);
+        QVERIFY(!link.written().contains("A?"));
+        link.deliver("#B6\r");
+        link.deliver("\n=}");
+        link.deliver("1234\r");
+        QTRY_COMPARE_WITH_TIMEOUT(polled.count(), 1, 5000);
+        QCOMPARE(polled.at(0).at(1).toString(), QStringLiteral("1234"));
+        QCOMPARE(errors.count(), 1);
+        QCOMPARE(errors.at(0).at(0).toInt(), 0xB6);
+        QCOMPARE(shown, QByteArray("BH#B6\r\n=}"));
+        QTRY_VERIFY_WITH_TIMEOUT(link.written().endsWith("A?"), 5000); // the typed command has ended
+        link.deliver("A?4000\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 5000);
+        QCOMPARE(finished.at(0).at(1).value<Pmc960Response>().value, QStringLiteral("4000"));
+    }
+
+    // A poll that cuts into a running routine and gets no answer fails without a CR asking for a prompt (it
+    // would wait in the controller and run as an empty command when the routine ends): the line stays the
+    // routine's, and polls go on after its prompt.
+    void anUnansweredPollLeavesTheRoutineAlone() {
+        ScriptLink link;
+        Pmc960Session session(link);
+        link.open();
+        link.deliver("\r\n=}");
+        QTRY_COMPARE_WITH_TIMEOUT(session.state(), Pmc960Session::State::Ready, 30000);
+        QSignalSpy failed(&session, &Pmc960Session::failed);
+        QSignalSpy polled(&session, &Pmc960Session::statusPolled);
+        session.setStatusPolling(10, "g");
+        session.sendTyped("BH\r");
+        link.deliver("BH");
+        QTRY_VERIFY_WITH_TIMEOUT(link.written().endsWith("\x1dg"), 5000);
+        const qsizetype pollAt = link.written().size();
+        QVERIFY(failed.wait(5000));
+        QVERIFY2(failed.at(0).at(1).toString().contains(QStringLiteral("typed command")),
+                 qPrintable(failed.at(0).at(1).toString()));
+        QVERIFY(!link.written().mid(pollAt).contains('\r'));
+        QCOMPARE(session.state(), Pmc960Session::State::Ready);
+        link.deliver("\r\n=}"); // the routine ends
+        QTRY_VERIFY_WITH_TIMEOUT(link.written().count("\x1dg") > 1, 5000);
+        link.deliver("0\r");
+        QTRY_COMPARE_WITH_TIMEOUT(polled.count(), 1, 5000);
+        QCOMPARE(link.written().count('\r'), 1); // BH's CR only
     }
 
     void statusTimerPollsWhileIdle() {

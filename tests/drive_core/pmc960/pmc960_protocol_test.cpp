@@ -204,6 +204,79 @@ TEST(Pmc960Protocol, GenericPowerUpWithEstopChangesValuesInUse) { // L1717, L875
     EXPECT_EQ(t.type("THC!"), prompted("THC!\r\nC-00"));
 }
 
+// Issue 19: a poll is answered "at any time during PMC operation" (5.3.3, L821), also while a routine run
+// with B<label> executes (the controller polls its SCI for ESC and <attn> between commands, L2554-2564) and
+// while it waits in a , or a dwell. The routine goes on: its output and its prompt come after, and the polls
+// are not in the communications checksum.
+TEST(Pmc960Protocol, PollsAreAnsweredWhileARoutineRuns) {
+    using drive_core::pmc960::Pmc960Wait;
+    TestDrive t;
+    std::string busy = "@B\r";
+    for (int i = 0; i < 100; ++i) busy += "A4000\r"; // 600 characters: 30 ms of execution without a wait
+    t.load("@H\rSM2\rA4000\rV400\rI8192+,\rD300\rG!\r" + busy);
+    t.type(attn('h'));
+    std::string out = t.type("BH\r");
+    // Simulated time passes until the routine is where the test wants it (5 s at most).
+    auto runUntil = [&](auto reached) {
+        for (int ms = 0; ms < 5000 && !reached(); ++ms) {
+            t.drive.step(1ms);
+            out += t.drive.takeTransmitted();
+        }
+        return reached();
+    };
+    const auto& interpreter = t.drive.interpreter();
+    ASSERT_TRUE(runUntil([&] { return t.drive.state().motion.actual_counts() > 100; }));
+    ASSERT_EQ(interpreter.wait(), Pmc960Wait::MotionDone); // in I8192+,
+    const std::string moving = t.type(attn('g'));
+    ASSERT_FALSE(moving.empty());
+    EXPECT_EQ(moving.back(), '\r');
+    const long position = std::stol(moving);
+    EXPECT_GT(position, 100);
+    EXPECT_LT(position, 8192);
+    EXPECT_EQ(t.type(attn('b')), "H 3\r"); // SM2 A4000 V400 done
+
+    ASSERT_TRUE(runUntil([&] { return interpreter.wait() == Pmc960Wait::Dwell; }));
+    EXPECT_EQ(t.type(attn('b')), "H 4\r");
+
+    ASSERT_TRUE(runUntil([&] { return t.drive.state().reg.lastLabel == 'B'; }));
+    ASSERT_TRUE(interpreter.running());
+    ASSERT_EQ(interpreter.wait(), Pmc960Wait::None); // executing, not waiting: answered between two commands
+    const std::string executing = t.type(attn('b'));
+    EXPECT_EQ(executing.substr(0, 2), "B ") << executing;
+    EXPECT_EQ(executing.back(), '\r');
+
+    ASSERT_TRUE(runUntil([&] { return !interpreter.running(); }));
+    EXPECT_EQ(out.substr(0, 2), "BH");
+    EXPECT_EQ(out.substr(out.size() - kPrompt.size()), kPrompt); // the routine ended as it would have
+    EXPECT_EQ(out.find('#'), std::string::npos) << out;
+    const std::string sent = "BH\r";
+    const int sum = std::accumulate(sent.begin(), sent.end(), 0, [](int s, char c) { return s + (unsigned char)c; });
+    EXPECT_EQ(t.type(attn('h')), std::to_string(sum) + "\r"); // the polls are not in it
+}
+
+// The same with the overrun model on: a routine that runs reads only ESC and <attn> from its one-character
+// buffer, so a host honouring CTS gets the poll answered in the middle of it, with nothing lost.
+TEST(Pmc960Overrun, PollsAreReadWhileARoutineRuns) {
+    TestDrive t;
+    std::string busy = "@H\r";
+    for (int i = 0; i < 200; ++i) busy += "A4000\r";
+    t.load(busy);
+    t.drive.setOverrunModel(true);
+    t.type("BH\r", 5ms);
+    ASSERT_TRUE(t.drive.interpreter().running());
+    std::string out;
+    for (const char c : std::string("\x1d\x62")) { // <attn> b
+        for (int wait = 0; wait < 100 && !t.drive.clearToSend(); ++wait) t.drive.step(std::chrono::microseconds(100));
+        ASSERT_TRUE(t.drive.clearToSend()) << "the routine does not read its SCI"; // CTS held: the byte waits
+        t.drive.receive(std::string_view(&c, 1));
+        t.drive.step(2ms);
+    }
+    out = t.drive.takeTransmitted();
+    EXPECT_TRUE(t.drive.interpreter().running());
+    EXPECT_NE(out.find("H "), std::string::npos) << out;
+    EXPECT_EQ(t.drive.overruns(), 0);
+}
+
 TEST(Pmc960Protocol, EpromProgramIsCopiedAtPowerUp) { // 5.10, L978-989
     TestDrive t;
     t.drive.setEprom("@PROGRAM\r@AI+\r\xFFgarbage");
