@@ -2,6 +2,7 @@
 // the Bode view of a velocity step reads a -3 dB bandwidth near 30 Hz on a plot that is not blank; Watch
 // Variables polls PFB while J 100 runs, the chart's values rise, the label shows a positive rate, and Stop
 // puts no more P on the wire.
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/bode_view.h"
@@ -22,13 +23,8 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000;
-
-bool driveReady(const MainWindow& window) {
-    const auto* session = window.connection().session();
-    return session && session->state() == serialport::Bds5Session::State::Ready &&
-           session->mode() == serialport::Bds5Mode::Interactive;
-}
+using app_test::kDriveTimeoutMs;
+using app_test::driveReady;
 
 int distinctColours(const QImage& image) {
     QSet<QRgb> colours;

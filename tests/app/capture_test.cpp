@@ -1,6 +1,7 @@
 // Capture: everything the session sent and received is in the capture, the .CAP file holds the drive's
 // text byte for byte, and a saved .CAP opens again unchanged — also where the terminal folds a record's or
 // a tuning run's PLAY listing into one line.
+#include "app_test_support.h"
 #include "app/drive/capture_dock.h"
 #include "app/drive/capture_log.h"
 #include "app/drive/drive_connection.h"
@@ -26,7 +27,7 @@ using app::CaptureLog;
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();
     return session && session->state() == serialport::Bds5Session::State::Ready;

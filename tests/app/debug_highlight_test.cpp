@@ -1,6 +1,7 @@
 // Beyond Motion Link: while the drive single-steps or traces the manual's nested-IF example 55$ (X1=X2=1),
 // the editor highlights exactly the lines of the manual's trace (L5688-5699), and the mark goes when another
 // family is chosen. Also the pieces: the stream parser and the line matching.
+#include "app_test_support.h"
 #include "app/drive/debug_highlighter.h"
 #include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
@@ -21,7 +22,7 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 
 // spec/examples/bds5/29-nested-if-55.bds (L4074-4088), as the user has it in the editor.
 const QStringList kProgram{QStringLiteral("55$"),

@@ -1,6 +1,7 @@
 // Terminal and drive control against the simulated BDS5: command history (F3, Up/Down, kept across
 // restarts, capped), ^X overtaking a long queue of commands and stopping motion in time, the Drive
 // actions following the drive's mode, and Run Label offering the labels of the program in the editor.
+#include "app_test_support.h"
 #include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
 #include "app/drive/run_label_dialog.h"
@@ -26,7 +27,7 @@ using app::MainWindow;
 using serialport::Bds5Session;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 
 QStringList terminalLines(const MainWindow& window) {
     return window.terminal()->text().split(QLatin1Char('\n'));

@@ -1,6 +1,7 @@
 // The error log (issue 7): ERR HIST parsed into rows with severity, catalog text and fix hint; errors the
 // drive reports while the IDE watches, go-to-line for a program error, ERR CLR and CSV export — against the
 // simulated BDS5. Plus the scanner that tells a drive's error from a listing that merely looks like one.
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/editing/editor_area.h"
 #include "app/errors/error_log_dock.h"
@@ -22,7 +23,7 @@ using app::ErrorLogModel;
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();

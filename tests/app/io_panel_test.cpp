@@ -2,6 +2,7 @@
 // alarm (L4783-4790, example 43: DIS, OUT = 0, B) — the outputs go dark in the panel and the drive says so —
 // and the bench goes through SimulatorLink::control, never the serial line; a load torque on the bench is held
 // by the motor's current, and Power Cycle brings the sign-on back with the drive disabled. Plus the DEP-01.
+#include "app_test_support.h"
 #include "app/dep01/dep01_panel.h"
 #include "app/dep01/dep01_screen.h"
 #include "app/drive/drive_connection.h"
@@ -24,7 +25,7 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();

@@ -1,5 +1,6 @@
 // MainWindow against the simulated BDS5: what a user sees on start-up and after typing in the terminal; and
 // that every family starts with its own sample program (servodesk --drive sc750 showed the BDS5's hello.bds).
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/drive/terminal_widget.h"
 #include "app/editing/editor_area.h"
@@ -20,7 +21,7 @@ using app::MainWindow;
 using drive_core::DriveFamily;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 const QString kPrompt = QStringLiteral("-->");
 
 QString labelText(const MainWindow& window, const char* name) {

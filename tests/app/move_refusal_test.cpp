@@ -4,6 +4,7 @@
 // not shown; a tuning run the drive refused adds no run, row or overlay; and before a tuning run whose move
 // would pass the soft limits the panel asks, turns PLIM off for the test only when told to, and runs nothing
 // when cancelled.
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/scope_controller.h"
@@ -25,13 +26,8 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000;
-
-bool driveReady(const MainWindow& window) {
-    const auto* session = window.connection().session();
-    return session && session->state() == serialport::Bds5Session::State::Ready &&
-           session->mode() == serialport::Bds5Mode::Interactive;
-}
+using app_test::kDriveTimeoutMs;
+using app_test::driveReady;
 
 // 250 samples of three variables every 32 ms: the 8 s recording of the report.
 serialport::Bds5RecordPlan longJog() {

@@ -1,5 +1,6 @@
 // Options persist (and the password only when remembered), apply (colours, autobaud, axis wake-up,
 // cable disconnect and reconnect), and the help browser shows the catalog's words for VMAX, ERR 25, MA.
+#include "app_test_support.h"
 #include "app/settings/app_options.h"
 #include "app/drive/drive_connection.h"
 #include "app/help/help_browser.h"
@@ -28,7 +29,7 @@ using app::MainWindow;
 namespace cat = drive_core::catalog::bds5;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();
     return session && session->state() == serialport::Bds5Session::State::Ready;

@@ -1,5 +1,6 @@
 // The Program and Variables menus against the simulated BDS5 at 9600 baud, asserting what a user sees: the
 // terminal, the status bar, the progress dialog, new tabs, and marks at the right editor lines.
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/editing/editor_area.h"
 #include "app/editing/editor_tabs.h"
@@ -27,14 +28,9 @@ using Result = serialport::Bds5TransferResult;
 using Status = Result::Status;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
+using app_test::driveReady;
 const QString kHelloWorld = QStringLiteral("10$\nP \"HELLO WORLD\"\nB\n"); // the manual's first session
-
-bool driveReady(const MainWindow& window) {
-    const auto* session = window.connection().session();
-    return session && session->state() == serialport::Bds5Session::State::Ready &&
-           session->mode() == serialport::Bds5Mode::Interactive;
-}
 
 struct Window {
     MainWindow window;

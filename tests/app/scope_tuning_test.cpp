@@ -4,6 +4,7 @@
 // samples, the drive's ERR 90 reaches the status bar, and the tuning loop sends KV, records again and
 // keeps the previous run as an overlay, with KV changing the response as the loop's physics predicts. TUNE is
 // checked against the bandwidth it was asked for.
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/gain_editor.h"
@@ -35,13 +36,8 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000;
-
-bool driveReady(const MainWindow& window) {
-    const auto* session = window.connection().session();
-    return session && session->state() == serialport::Bds5Session::State::Ready &&
-           session->mode() == serialport::Bds5Mode::Interactive;
-}
+using app_test::kDriveTimeoutMs;
+using app_test::driveReady;
 
 serialport::Bds5RecordPlan velocityStep() {
     serialport::Bds5RecordPlan plan;

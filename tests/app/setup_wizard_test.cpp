@@ -4,6 +4,7 @@
 // Feedback readouts show the drive's answers, the units page previews the conversion as a user types, and the
 // Motor Setup page swaps the simulated motor (its ICONT read anew, the I/O panel showing the same motor). Every
 // page shows "Step N of M" in the same header.
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/io/io_panel.h"
 #include "app/main_window.h"
@@ -35,7 +36,7 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 // Not touched by the round trip: they would cut the line to the drive or its prompts.
 const QStringList kRisky{"BAUD", "ADDR", "WATCH", "PROMPT", "ECHO", "MULTI", "FAULT"};
 

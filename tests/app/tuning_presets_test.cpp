@@ -2,6 +2,7 @@
 // values keeps ICMD below ILIM (no warning), a deliberately larger step drives ICMD into ILIM and the panel
 // warns, the position-step preset moves by its amplitude and back, as the recorded PCMD and PFB show, and the
 // amplitude, once proposed, stays while the gains change (issue 19: runs compared one move).
+#include "app_test_support.h"
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/gain_editor.h"
@@ -23,14 +24,9 @@
 using app::MainWindow;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000;
+using app_test::kDriveTimeoutMs;
+using app_test::driveReady;
 constexpr int kIlim = 50; // % of the drive's current (INUM/IDEN at power-up): the proposal follows ILIM
-
-bool driveReady(const MainWindow& window) {
-    const auto* session = window.connection().session();
-    return session && session->state() == serialport::Bds5Session::State::Ready &&
-           session->mode() == serialport::Bds5Mode::Interactive;
-}
 
 double peakOf(const scope::Capture& capture, const char* channel) {
     const scope::CaptureChannel* c = capture.find(channel);

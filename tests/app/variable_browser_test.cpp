@@ -2,6 +2,7 @@
 // error, and — against the simulated BDS5 — an edit that reaches the drive and comes back, an out-of-range
 // edit refused before sending, a write the drive itself refuses, live polling of the rows in view, the
 // watch list and "Copy as .VAR", the search filter, and polling that pauses while a program runs (no prompt).
+#include "app_test_support.h"
 #include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
 #include "app/drive/terminal_widget.h"
@@ -27,7 +28,7 @@ using app::VariableModel;
 using app::VariableValidator;
 
 namespace {
-constexpr int kDriveTimeoutMs = 30000; // generous: a loaded machine has been seen to stall every process for 8 s
+using app_test::kDriveTimeoutMs;
 
 bool ready(const MainWindow& window) {
     const auto* session = window.connection().session();
