@@ -3,32 +3,25 @@
 // Edits]". Non-modal: the IDE stays usable while it waits for an answer. GUI thread only.
 #pragma once
 
-#include <QFrame>
+#include "info_bar.h"
 
-class QLabel;
-class QPushButton;
+#include <QPushButton>
 
 namespace app {
 
-class DiskChangeBar final : public QFrame {
+class DiskChangeBar final : public InfoBar {
     Q_OBJECT
 public:
     explicit DiskChangeBar(QWidget* parent = nullptr);
 
     // Shows the bar with html as its question; keepText labels the button that leaves the editor as it is.
     void ask(const QString& html, const QString& keepText);
-    QString message() const;
-    QPushButton* reloadButton() const { return m_reload; }
-    QPushButton* keepButton() const { return m_keep; }
+    QPushButton* reloadButton() const { return first(); }
+    QPushButton* keepButton() const { return second(); }
 
 signals:
     void reloadRequested();
     void keepRequested();
-
-private:
-    QLabel* m_text;
-    QPushButton* m_reload;
-    QPushButton* m_keep;
 };
 
 } // namespace app

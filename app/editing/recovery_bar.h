@@ -4,32 +4,25 @@
 
 #include "recovery_store.h"
 
-#include <QFrame>
+#include "info_bar.h"
 
-class QLabel;
-class QPushButton;
+#include <QPushButton>
 
 namespace app {
 
-class RecoveryBar final : public QFrame {
+class RecoveryBar final : public InfoBar {
     Q_OBJECT
 public:
     explicit RecoveryBar(QWidget* parent = nullptr);
 
     // Shows the bar listing buffers (hidden when there are none).
     void offer(const QList<RecoveredBuffer>& buffers);
-    QString message() const;
-    QPushButton* restoreButton() const { return m_restore; }
-    QPushButton* discardButton() const { return m_discard; }
+    QPushButton* restoreButton() const { return first(); }
+    QPushButton* discardButton() const { return second(); }
 
 signals:
     void restoreRequested();
     void discardRequested();
-
-private:
-    QLabel* m_text;
-    QPushButton* m_restore;
-    QPushButton* m_discard;
 };
 
 } // namespace app
