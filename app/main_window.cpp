@@ -1,6 +1,7 @@
 // MainWindow: composition and wiring.
 #include "main_window.h"
 #include "status_bar_room.h"
+#include "drive/terminal_tabs.h"
 
 #include "capture_dock.h"
 #include "capture_log.h"
@@ -237,8 +238,9 @@ void MainWindow::createMenus() {
     view->addAction(m_captureDock->toggleViewAction());
     view->addAction(m_helpBrowser->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
-    for (QDockWidget* dock :
-         std::initializer_list<QDockWidget*>{m_variablesDock, m_errorLogDock, m_ioPanel, m_dep01Panel})
+    view->addAction(m_variablesDock->toggleViewAction());
+    view->addAction(terminalTabAction(*this, m_terminalDock, m_errorLogDock, m_errorLogDock->windowTitle(), this));
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_ioPanel, m_dep01Panel})
         view->addAction(dock->toggleViewAction());
     for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_variablesDock, m_ioPanel, m_dep01Panel})
         m_bds5Only << dock->toggleViewAction();

@@ -14,6 +14,7 @@
 #include "transfer_dialog.h"
 #include "transfer_reporter.h"
 #include "tuning_panel.h"
+#include "terminal_tabs.h"
 #include "bds5_watch_source.h"
 #include "watch_view.h"
 
@@ -74,8 +75,8 @@ ScopeController::ScopeController(MainWindow& window)
     m_menu->addAction(tr("&Frequency Response..."), this, &ScopeController::frequencyResponse);
     m_menu->addAction(tr("&Watch Variables..."), this, &ScopeController::watchVariables);
     m_menu->addSeparator();
-    m_menu->addAction(openingAction(m_scopeDock, tr("Sc&ope")));
-    m_menu->addAction(openingAction(m_tuningDock, tr("&Tuning Panel")));
+    m_menu->addAction(terminalTabAction(m_window, m_window.terminalDock(), m_scopeDock, tr("Sc&ope"), this));
+    m_menu->addAction(terminalTabAction(m_window, m_window.terminalDock(), m_tuningDock, tr("&Tuning Panel"), this));
     connect(this, &ScopeController::captureShown, this, &ScopeController::keepForBode);
     connect(&m_tuning->runner(), &TuningRunner::runFinished, this,
             [this](const TuningRun& run) { keepForBode(run.capture); });
@@ -154,33 +155,7 @@ void ScopeController::record(const serialport::Bds5RecordPlan& plan) {
 // The Scope dock shows tabbed with the terminal (tabified only now: a hidden tab in the terminal's group
 // would take the terminal's size until then).
 void ScopeController::raiseScopeDock() {
-    if (!m_scopeDock->isVisible()) raiseInTerminalTabs(m_scopeDock);
-    m_scopeDock->raise();
-}
-
-// Opened from the menu, a dock joins the terminal's tabs before it shows, as the Scope does when a capture
-// arrives: shown side by side with the terminal (the dock's own toggle action), the Tuning panel pushed the
-// window 1236 px wide (issue 19, item 10). Not tabbed while hidden: a hidden tab takes the terminal's size.
-QAction* ScopeController::openingAction(QDockWidget* dock, const QString& text) {
-    auto* action = new QAction(text, this);
-    action->setCheckable(true);
-    action->setProperty("opensDock", QVariant::fromValue(static_cast<QObject*>(dock)));
-    connect(action, &QAction::triggered, this, [this, dock](bool shown) {
-        if (shown) raiseInTerminalTabs(dock);
-        else dock->hide();
-    });
-    connect(dock->toggleViewAction(), &QAction::toggled, action, &QAction::setChecked);
-    connect(dock->toggleViewAction(), &QAction::changed, action,
-            [action, dock] { action->setVisible(dock->toggleViewAction()->isVisible()); });
-    return action;
-}
-
-void ScopeController::raiseInTerminalTabs(QDockWidget* dock) {
-    const bool tabbed = m_window.tabifiedDockWidgets(m_window.terminalDock()).contains(dock);
-    if (!dock->isFloating() && !tabbed && m_window.terminalDock()->isVisible())
-        m_window.tabifyDockWidget(m_window.terminalDock(), dock);
-    dock->show();
-    dock->raise();
+    raiseInTerminalTabs(m_window, m_window.terminalDock(), m_scopeDock);
 }
 
 void ScopeController::show(const scope::Capture& capture) {

@@ -61,8 +61,6 @@ private:
     void show(const scope::Capture& capture);
     void keepForBode(const scope::Capture& capture);
     void raiseScopeDock();
-    void raiseInTerminalTabs(QDockWidget* dock); // shown as a tab beside the terminal (unless floated)
-    QAction* openingAction(QDockWidget* dock, const QString& text);
     void status(const QString& message);
 
     MainWindow& m_window;

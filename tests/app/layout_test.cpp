@@ -84,13 +84,18 @@ private slots:
             window.resize(screen);
             QCoreApplication::processEvents();
             const QSize minimum = window.minimumSizeHint();
-            if (window.size() != screen || dock->width() > screen.width())
-                tooBig << QStringLiteral("%1 (window %2×%3, needs %4×%5)")
+            // A dock of the bottom area opens as a tab beside the terminal, as wide as the window (the Error Log
+            // once opened 318 px wide beside it).
+            const bool narrowAtTheBottom = window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea &&
+                                           !dock->isFloating() && dock->width() < screen.width() * 3 / 4;
+            if (window.size() != screen || dock->width() > screen.width() || narrowAtTheBottom)
+                tooBig << QStringLiteral("%1 %6 px wide (window %2×%3, needs %4×%5)")
                               .arg(dock->windowTitle())
                               .arg(window.width())
                               .arg(window.height())
                               .arg(minimum.width())
-                              .arg(minimum.height());
+                              .arg(minimum.height())
+                              .arg(dock->width());
             openingAction(window, dock)->trigger();
             window.resize(screen);
             QCoreApplication::processEvents();
