@@ -80,7 +80,10 @@ private slots:
         QVERIFY(w.ready());
         QCOMPARE(w.panel->runner().driveValues().value(QStringLiteral("ILIM")), double(kIlim));
         app::TestMove move;
-        move.durationMs = 60;
+        // The J goes out a host round trip after the drive accepted RECORD: under load (ctest -j 4 beside CPU
+        // hogs) that was up to ~95 ms of the record, and a 60 ms step's 120 ms record then ended before ICMD
+        // peaked. A 150 ms step leaves 300 ms; the velocity step's proposal does not depend on it.
+        move.durationMs = 150;
         w.panel->setTestMove(move);
         w.panel->useProposedAmplitude();
         const int proposed = w.panel->proposedAmplitude();
