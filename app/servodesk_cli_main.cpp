@@ -1,5 +1,5 @@
-// servodesk-cli: ServoDesk without windows — check, download, upload, variables, send, run, stop and
-// record against a simulated drive (the default) or a drive on a serial port.
+// servodesk-cli: ServoDesk without windows — check, download, upload, variables, send, run, stop, record
+// and watch against a simulated drive (the default) or a drive on a serial port.
 #include "cli/cli_options.h"
 #include "cli/cli_runner.h"
 

@@ -6,7 +6,7 @@ set -euo pipefail
 build_deps=(
   build-essential cmake ninja-build ccache pkg-config
   qt6-base-dev qt6-base-dev-tools qt6-serialport-dev libqscintilla2-qt6-dev libqcustomplot-dev
-  libeigen3-dev libgl-dev qt6-qpa-plugins libqt6svg6 fonts-dejavu-core
+  libeigen3-dev libfftw3-dev libgl-dev qt6-qpa-plugins libqt6svg6 fonts-dejavu-core
 )
 test_deps=(
   desktop-file-utils appstream dpkg-dev file lintian

@@ -29,6 +29,10 @@ names=()
 for t in "${targets[@]}"; do names+=("${t%% *}"); done
 cmake --build "$build" -j "$(nproc)" --target "${names[@]}"
 
+# Per target: executions, wall time and executions per second, and executions per CPU-second (user + sys
+# of the fuzzer process, from bash's time): on a shared, loaded machine the wall rate shows the load, the
+# CPU rate what the target costs (issue 20: bds5_drive_fuzz aims at 2,000 a second).
+TIMEFORMAT='%R %U %S'
 status=0
 for t in "${targets[@]}"; do
     read -r name dir corpus flags <<<"$t"
@@ -36,15 +40,23 @@ for t in "${targets[@]}"; do
     artifacts=$build/$name-artifacts/
     mkdir -p "$work" "$artifacts"
     log=$build/$name.log
+    timing=$build/$name.time
+    found=0
     # shellcheck disable=SC2086
-    if "$build/$dir/$name" "$work" "$root/$corpus" $flags -seed="$seed" -timeout=10 \
+    { time "$build/$dir/$name" "$work" "$root/$corpus" $flags -seed="$seed" -timeout=10 \
         -rss_limit_mb=2048 -max_total_time="$seconds" -artifact_prefix="$artifacts" -print_final_stats=1 \
-        >"$log" 2>&1; then
-        runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
-        echo "fuzz: $name: $runs executions in $seconds s, no findings"
+        >"$log" 2>&1; } 2>"$timing" || found=1
+    runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+    read -r wall user sys <"$timing" || true
+    rates=$(awk -v n="$runs" -v w="${wall:-0}" -v u="${user:-0}" -v s="${sys:-0}" 'BEGIN {
+        c = u + s
+        printf "%.1f s wall, %.0f exec/s; %.1f s CPU, %.0f exec per CPU-second", w, w > 0 ? n / w : 0, c, c > 0 ? n / c : 0
+    }')
+    if [ "$found" = 0 ]; then
+        echo "fuzz: $name: $runs executions in $seconds s ($rates), no findings"
     else
         status=1
-        echo "fuzz: $name: FINDING (see $log and $artifacts)"
+        echo "fuzz: $name: FINDING after $runs executions ($rates) (see $log and $artifacts)"
         tail -n 40 "$log"
     fi
 done

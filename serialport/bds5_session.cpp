@@ -14,7 +14,6 @@ Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(
     qRegisterMetaType<Bds5Response>();
     m_silence.setSingleShot(true);
     m_silence.setInterval(m_link.quietMs());
-    m_timeout.setSingleShot(true);
     m_wake.setSingleShot(true);
     m_wake.setInterval(kWakeAfterMs);
     connect(&m_link, &Link::bytesReceived, this, &Bds5Session::onBytes);
@@ -29,7 +28,7 @@ Bds5Session::Bds5Session(Link& link, QObject* parent) : QObject(parent), m_link(
         emit modeChanged(m_mode, m_prompt);
     });
     connect(&m_silence, &QTimer::timeout, this, &Bds5Session::onPromptConfirmed);
-    connect(&m_timeout, &QTimer::timeout, this, &Bds5Session::onTimeout);
+    connect(&m_timeout, &DriveTimeout::timeout, this, &Bds5Session::onTimeout);
     connect(&m_wake, &QTimer::timeout, this, [this] {
         if (m_state != State::WaitingForPrompt || m_rawLineOpen) return;
         write("\r");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bds5_protocol.h"
+#include "drive_timeout.h"
 #include "link.h"
 
 #include <QList>
@@ -107,7 +108,7 @@ private:
     quint64 m_nextId = 1;
     int m_linkTroubles = 0;
     QTimer m_silence;
-    QTimer m_timeout;
+    DriveTimeout m_timeout{m_link};
     QTimer m_wake;
     QTimer m_runDetect;
 };

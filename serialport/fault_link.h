@@ -36,6 +36,7 @@ public:
     QString description() const override { return tr("%1 (faulty)").arg(m_inner.description()); }
     int baudRate() const override { return m_inner.baudRate(); }
     int quietMs() const override { return m_inner.quietMs(); }
+    std::optional<double> driveClockMs() const override { return m_inner.driveClockMs(); }
 
     // The cable is pulled: nothing passes any more, closed() and errorOccurred() follow.
     void cut();

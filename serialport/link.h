@@ -6,6 +6,8 @@
 #include <QObject>
 #include <QString>
 
+#include <optional>
+
 namespace serialport {
 
 class Link : public QObject {
@@ -27,6 +29,9 @@ public:
     // How long the line must stay quiet after a prompt-shaped tail before a session trusts it is a prompt
     // (§2.10 rule 6). USB serial adapters deliver in bursts up to 16 ms apart (FTDI latency timer).
     virtual int quietMs() const { return 20; }
+    // The drive's own clock in ms where the link has one (a simulated drive, whose thread a loaded host can
+    // stall); none for a real port. Sessions count their time-outs in it (drive_timeout.h). Any thread.
+    virtual std::optional<double> driveClockMs() const { return std::nullopt; }
 
 signals:
     void opened();

@@ -26,7 +26,6 @@ const QRegularExpression& errorCodePattern() {
 
 Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
     qRegisterMetaType<Pmc960Response>();
-    m_timeout.setSingleShot(true);
     m_wake.setSingleShot(true);
     m_wake.setInterval(kWakeAfterMs);
     connect(&m_link, &Link::bytesReceived, this, &Pmc960Session::onBytes);
@@ -43,7 +42,7 @@ Pmc960Session::Pmc960Session(Link& link, QObject* parent) : QObject(parent), m_l
         typedLineClosed();
         setState(State::Closed);
     });
-    connect(&m_timeout, &QTimer::timeout, this, &Pmc960Session::onTimeout);
+    connect(&m_timeout, &DriveTimeout::timeout, this, &Pmc960Session::onTimeout);
     connect(&m_wake, &QTimer::timeout, this, [this] {
         if (m_state != State::WaitingForPrompt) return;
         askForPrompt();

@@ -7,6 +7,7 @@
 // GUI thread; never blocks, no nested event loops. The link must outlive the session.
 #pragma once
 
+#include "drive_timeout.h"
 #include "link.h"
 
 #include <QByteArray>
@@ -128,7 +129,7 @@ private:
     int m_axisCandidateSeen = 0;
     quint16 m_sentSum = 0;
     quint64 m_nextId = 1;
-    QTimer m_timeout;
+    DriveTimeout m_timeout{m_link};
     QTimer m_wake;
     QTimer m_settle; // a prompt while resynchronising: ready once the line stays quiet
     QTimer m_statusTimer;

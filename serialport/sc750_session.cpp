@@ -14,8 +14,7 @@ constexpr int kMaxFrame = 400;
 
 Sc750Session::Sc750Session(Link& link, QObject* parent) : QObject(parent), m_link(link) {
     qRegisterMetaType<Sc750Reply>();
-    m_timeout.setSingleShot(true);
-    connect(&m_timeout, &QTimer::timeout, this, &Sc750Session::onTimeout);
+    connect(&m_timeout, &DriveTimeout::timeout, this, &Sc750Session::onTimeout);
     connect(&m_link, &Link::bytesReceived, this, &Sc750Session::onBytes);
     connect(&m_link, &Link::opened, this, &Sc750Session::pump);
 }

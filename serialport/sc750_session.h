@@ -6,6 +6,7 @@
 // nested event loop. The session keeps a reference to its link: whoever owns both destroys it first.
 #pragma once
 
+#include "drive_timeout.h"
 #include "link.h"
 
 #include <QObject>
@@ -81,7 +82,7 @@ private:
     bool m_inFrame = false;
     QByteArray m_output; // program bytes of one read, emitted together
     quint64 m_nextId = 1;
-    QTimer m_timeout;
+    DriveTimeout m_timeout{m_link};
 };
 
 } // namespace serialport

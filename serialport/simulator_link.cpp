@@ -17,7 +17,8 @@ SimulatorLink::~SimulatorLink() { close(); }
 
 void SimulatorLink::open() {
     if (m_open) return;
-    m_worker = new SimulatorWorker(m_family, m_options);
+    m_driveClockMs = std::make_shared<std::atomic<double>>(0.0);
+    m_worker = new SimulatorWorker(m_family, m_options, m_driveClockMs);
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     // What the worker sent before close() stopped it may still wait in this thread's event queue: a closed
@@ -39,6 +40,11 @@ void SimulatorLink::open() {
     QMetaObject::invokeMethod(m_worker, &SimulatorWorker::start, Qt::QueuedConnection);
     m_open = true;
     emit opened();
+}
+
+std::optional<double> SimulatorLink::driveClockMs() const {
+    if (!m_driveClockMs) return std::nullopt;
+    return m_driveClockMs->load(std::memory_order_acquire);
 }
 
 void SimulatorLink::close() {

@@ -8,6 +8,7 @@
 
 #include <QThread>
 
+#include <atomic>
 #include <functional>
 #include <memory>
 
@@ -44,6 +45,7 @@ public:
     int baudRate() const override { return m_options.baudRate; }
     // The worker hands bytes over every 1 ms tick: a few ticks of silence is a pause.
     int quietMs() const override { return 4; }
+    std::optional<double> driveClockMs() const override;
 
     // The simulator's bench (inputs, load, motor, power), not its serial port: the change runs in the
     // worker thread before the drive's next step. Ignored while the link is closed. GUI thread.
@@ -61,6 +63,7 @@ private:
     QThread m_thread;
     SimulatorWorker* m_worker = nullptr; // lives in m_thread; deleted when the thread finishes
     bool m_open = false;
+    std::shared_ptr<std::atomic<double>> m_driveClockMs; // this opening's drive, written by its worker
     quint64 m_generation = 0; // one per open(): bytes of an earlier worker are not this opening's
     drive_core::SimulatorStatus m_status;
 };

@@ -13,8 +13,9 @@ constexpr auto kTick = std::chrono::microseconds(1000);
 constexpr int kMaxTicksPerWake = 200; // after a stall, catch up at most this much at once
 } // namespace
 
-SimulatorWorker::SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::Options options)
-    : m_family(family), m_options(options) {}
+SimulatorWorker::SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::Options options,
+                                 std::shared_ptr<std::atomic<double>> clock)
+    : m_family(family), m_options(options), m_driveClockMs(std::move(clock)) {}
 
 SimulatorWorker::~SimulatorWorker() = default;
 
@@ -93,9 +94,11 @@ void SimulatorWorker::tick() {
         ++ticks;
     }
     if (ticks == kMaxTicksPerWake) m_simulatedUs = double(m_drive->now().count()); // drop the lost time
-    // The drive's own UART sends at its BAUD rate: what it has sent is on the wire now.
+    // The drive's own UART sends at its BAUD rate: what it has sent is on the wire now. Its clock is
+    // published after, so a session that reads the clock finds what came before it already posted.
     const std::string out = m_drive->takeTransmitted();
     if (!out.empty()) emit transmitted(QByteArray(out.data(), qsizetype(out.size())));
+    m_driveClockMs->store(double(m_drive->now().count()) / 1000.0, std::memory_order_release);
     if (wallUs - m_lastStatusUs >= SimulatorLink::kStatusIntervalMs * 1000) {
         m_lastStatusUs = wallUs;
         reportStatus();

@@ -20,7 +20,9 @@ namespace serialport {
 class SimulatorWorker final : public QObject {
     Q_OBJECT
 public:
-    SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::Options options);
+    // clock: where the worker publishes the drive's time in ms after each step (SimulatorLink::driveClockMs).
+    SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::Options options,
+                    std::shared_ptr<std::atomic<double>> clock);
     ~SimulatorWorker() override;
 
     // Worker thread only (invoked through queued calls).
@@ -50,6 +52,7 @@ private:
     QElapsedTimer m_clock;
     qint64 m_lastWallUs = 0;
     double m_simulatedUs = 0; // how far the drive should have got
+    std::shared_ptr<std::atomic<double>> m_driveClockMs;
 };
 
 } // namespace serialport

@@ -1,15 +1,19 @@
-// servodesk-cli: the BDS5's own verbs — .VAR files (DUMP and NAME value lines) and RECORD/PLAY to CSV —
-// on the Bds5Session behind the DriveSession contract.
+// servodesk-cli: the BDS5's own ways — .VAR files (DUMP and NAME value lines) and RECORD/PLAY to the scope's
+// CSV — on the Bds5Session behind the DriveSession contract.
 #include "cli_runner.h"
 
 #include "cli_files.h"
 
-#include "drive_core/catalog/bds5_catalog.h"
+#include "scope/capture_csv.h"
+#include "scope/play_parser.h"
 #include "serialport/bds5_drive_session.h"
 #include "serialport/bds5_variables_from_drive.h"
 #include "serialport/bds5_variables_to_drive.h"
+#include "serialport/watch_choices.h"
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace app::cli {
 
@@ -20,13 +24,10 @@ serialport::Bds5Session* CliRunner::bds5Session() {
     return bds5 ? &bds5->bds5() : nullptr;
 }
 
-// vars dump FILE.VAR / vars send FILE.VAR. Only the BDS5 has a variable file a drive reads and writes line by
-// line; the SC750's parameters and the PMC-960's table are the IDE's for now.
+// vars dump FILE.VAR / vars send FILE.VAR: DUMP into Motion Link's .VAR, and its NAME value lines at the prompt
+// (the other families': cli_parameter_transfer.cpp).
 void CliRunner::bds5Vars(const CliCommand& c) {
     Bds5Session* session = bds5Session();
-    if (!session)
-        return fail(kUsage, QStringLiteral("vars: only the BDS5's .VAR files are read and written by servodesk-cli; "
-                                           "use the IDE's variable browser for this drive"));
     serialport::Bds5Transfer* t = nullptr;
     if (c.kind == CliCommand::Kind::VarsSend) {
         QString error;
@@ -68,12 +69,12 @@ void CliRunner::bds5TransferDone(const CliCommand& c, const serialport::Bds5Tran
 void CliRunner::record(const CliCommand& c) {
     Bds5Session* session = bds5Session();
     if (!session)
-        return fail(kUsage, QStringLiteral("record: RECORD/PLAY is the BDS5's; the IDE's Watch Variables plots "
-                                           "this drive's values"));
+        return fail(kUsage, QStringLiteral("record: RECORD/PLAY is the BDS5's; \"watch --vars ... --every MS --for S "
+                                           "--csv FILE\" polls this drive's values into the same CSV"));
     QStringList lines{QStringLiteral("RECORD %1 %2 %3")
                           .arg(c.recordCount)
                           .arg(c.recordIntervalMs)
-                          .arg(c.recordVariables.join(QLatin1Char(' ')))};
+                          .arg(c.variables.join(QLatin1Char(' ')))};
     if (!c.recordThen.isEmpty()) lines << c.recordThen;
     auto* guard = new QObject(this);
     auto left = std::make_shared<int>(int(lines.size())); // answers still to come
@@ -99,47 +100,39 @@ void CliRunner::record(const CliCommand& c) {
     for (const QString& l : lines) session->send(l);
 }
 
-// PLAY's first line repeats the set-up, then one line per sample, 12 columns a value (the drive's choice,
-// documented in drive_core/bds5/bds5_recorder.h). The CSV names variables, units and interval.
+// PLAY's listing (its first line repeats the set-up, then one line per sample) parsed by the scope's own
+// parser into a Capture and written as the scope's .CSV (scope/capture_csv.h): what Scope > Open reads.
 void CliRunner::play(const CliCommand& c) {
     Bds5Session* session = bds5Session();
     const quint64 id = session->send(QStringLiteral("PLAY"));
     auto* guard = new QObject(this);
     connect(
-        session, &Bds5Session::finished, guard,
-        [this, guard, id, c](quint64 done, const serialport::Bds5Response& r) {
+        session, &Bds5Session::finished, guard, [this, guard, id, c](quint64 done, const serialport::Bds5Response& r) {
             if (done != id) return;
             guard->deleteLater();
             progress(QString());
             if (!r.errors.isEmpty())
                 return fail(kDriveError,
                             QStringLiteral("PLAY: ERR %1 %2").arg(r.errors.first().code).arg(r.errors.first().message));
-            QString csv = QStringLiteral("# ServoDesk RECORD %1 samples every %2 ms\n")
-                              .arg(c.recordCount)
-                              .arg(c.recordIntervalMs);
-            csv += QStringLiteral("time_s");
-            for (const QString& v : c.recordVariables) {
-                const auto ref = drive_core::catalog::bds5::findVariable(v.toStdString());
-                const QString unit =
-                    ref ? QString::fromLatin1(ref->info->units.data(), qsizetype(ref->info->units.size())) : QString();
-                csv += QStringLiteral(",%1 [%2]").arg(v, unit);
-            }
-            csv += QLatin1Char('\n');
-            int samples = 0;
-            for (int i = 1; i < r.lines.size(); ++i) { // line 0 repeats the RECORD set-up
-                const QStringList values = r.lines[i].split(QLatin1Char(' '), Qt::SkipEmptyParts);
-                if (values.size() != c.recordVariables.size()) continue;
-                csv += QString::number(double(samples) * c.recordIntervalMs / 1000.0, 'f', 3);
-                for (const QString& v : values) csv += QLatin1Char(',') + v;
-                csv += QLatin1Char('\n');
-                ++samples;
-            }
+            std::vector<std::string> lines;
+            for (const QString& l : r.lines) lines.push_back(l.toStdString());
+            // The unit P prints a variable in (currents in %), as the IDE's scope names them.
+            const auto unitOf = [](const std::string& name) {
+                const auto choice =
+                    serialport::findWatchChoice(drive_core::DriveFamily::Bds5, QString::fromStdString(name));
+                return choice ? choice->unit.toStdString() : std::string();
+            };
+            const scope::PlayParseResult parsed = scope::parsePlay(lines, unitOf);
+            if (!parsed.capture)
+                return fail(kDriveError, QStringLiteral("PLAY: %1").arg(QString::fromStdString(parsed.error)));
+            const std::size_t samples = parsed.capture->sampleCount();
             if (samples == 0) return fail(kDriveError, QStringLiteral("PLAY returned no samples"));
             QString error;
-            if (!writeTextFile(c.csvPath, csv, error)) return fail(kUsage, error);
+            if (!writeTextFile(c.csvPath, QString::fromStdString(scope::writeCsv(*parsed.capture)), error))
+                return fail(kUsage, error);
             out(QStringLiteral("%1 samples of %2 written to %3\n")
                     .arg(samples)
-                    .arg(c.recordVariables.join(QLatin1Char(',')))
+                    .arg(c.variables.join(QLatin1Char(',')))
                     .arg(c.csvPath));
             next();
         });

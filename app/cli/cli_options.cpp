@@ -7,7 +7,8 @@ namespace {
 bool isCommandWord(const QString& w) {
     static const QStringList kWords{QStringLiteral("check"),  QStringLiteral("compile"), QStringLiteral("download"),
                                     QStringLiteral("upload"), QStringLiteral("vars"),    QStringLiteral("send"),
-                                    QStringLiteral("run"),    QStringLiteral("stop"),    QStringLiteral("record")};
+                                    QStringLiteral("run"),    QStringLiteral("stop"),    QStringLiteral("record"),
+                                    QStringLiteral("watch")};
     return kWords.contains(w);
 }
 } // namespace
@@ -22,8 +23,11 @@ QString cliUsage() {
         "  download FILE                      send the program and verify it on the drive (BDS5 read back +\n"
         "                                     P CHECKSUM, SC750 .BIN CRC-32, PMC-960 communications checksum)\n"
         "  upload FILE                        the drive's program into FILE (SC750: its stored source)\n"
-        "  vars dump FILE.VAR                 BDS5: DUMP the variables (drive disabled) into FILE.VAR\n"
-        "  vars send FILE.VAR                 BDS5: send each NAME value line at its prompt\n"
+        "  vars dump FILE                     the drive's variables or parameters into FILE: BDS5 .VAR (DUMP,\n"
+        "                                     drive disabled), SC750 .PRM (its PARAMS block), PMC-960 .MPL (the\n"
+        "                                     T table as the lines that set it, SW1 ... SW0)\n"
+        "  vars send FILE                     each line of such a file to the drive; a refusal is printed as\n"
+        "                                     FILE:LINE: and the rest still go (exit 1 if any)\n"
         "  send LINE...                       send lines, print the drive's answers (SC750: NAME reads,\n"
         "                                     NAME=VALUE writes, GO.VEL etc. call a function)\n"
         "  run [LABEL] [--follow SECONDS]     BDS5 RUN, SC750 R, PMC-960 B<label>; with --follow print what\n"
@@ -31,6 +35,11 @@ QString cliUsage() {
         "  stop                               stop motion and the program (^X, Ctrl C, ESC)\n"
         "  record --vars V1,V2 --count N --interval MS [--then \"J 1000\"] --csv OUT.csv\n"
         "                                     BDS5: RECORD, trigger, PLAY, and write the scope's CSV\n"
+        "  watch --vars V1,V2 --every MS --for SECONDS --csv OUT.csv\n"
+        "                                     poll 1 to 4 values every MS ms for SECONDS s into the scope's CSV,\n"
+        "                                     each row stamped when it was read (BDS5: P; SC750: G frames, e.g.\n"
+        "                                     POSITION,VELOCITY; PMC-960: status polls G,SF,V,I); --sim then\n"
+        "                                     runs the drive in real time\n"
         "The default connection is --sim --drive bds5: a fresh simulated drive, faster than real time.\n"
         "Exit status: 0 success, 1 a drive error, mismatch or diagnostic, 2 bad usage, 3 no drive answer.\n");
 }
@@ -103,28 +112,45 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
                 error = QStringLiteral("run takes one label");
                 return std::nullopt;
             }
-        } else if (word == QLatin1String("record")) {
-            c.kind = CliCommand::Kind::Record;
+        } else if (word == QLatin1String("record") || word == QLatin1String("watch")) {
+            const bool record = word == QLatin1String("record");
+            c.kind = record ? CliCommand::Kind::Record : CliCommand::Kind::Watch;
+            if (rest.size() % 2 != 0) {
+                error = QStringLiteral("%1: \"%2\" needs a value").arg(word, rest.last());
+                return std::nullopt;
+            }
             for (int k = 0; k + 1 < rest.size(); k += 2) {
                 const QString& key = rest[k];
                 const QString& v = rest[k + 1];
                 if (key == QLatin1String("--vars"))
-                    c.recordVariables = v.toUpper().split(QLatin1Char(','), Qt::SkipEmptyParts);
-                else if (key == QLatin1String("--count"))
-                    c.recordCount = v.toInt();
-                else if (key == QLatin1String("--interval"))
-                    c.recordIntervalMs = v.toInt();
-                else if (key == QLatin1String("--then"))
-                    c.recordThen = v;
+                    c.variables = v.toUpper().split(QLatin1Char(','), Qt::SkipEmptyParts);
                 else if (key == QLatin1String("--csv"))
                     c.csvPath = v;
+                else if (record && key == QLatin1String("--count"))
+                    c.recordCount = v.toInt();
+                else if (record && key == QLatin1String("--interval"))
+                    c.recordIntervalMs = v.toInt();
+                else if (record && key == QLatin1String("--then"))
+                    c.recordThen = v;
+                else if (!record && key == QLatin1String("--every"))
+                    c.watchEveryMs = v.toInt();
+                else if (!record && key == QLatin1String("--for"))
+                    c.watchForSeconds = v.toDouble();
                 else {
-                    error = QStringLiteral("record: unknown option \"%1\"").arg(key);
+                    error = QStringLiteral("%1: unknown option \"%2\"").arg(word, key);
                     return std::nullopt;
                 }
             }
-            if (c.recordVariables.isEmpty() || c.recordCount <= 0 || c.recordIntervalMs <= 0 || c.csvPath.isEmpty()) {
+            if (record &&
+                (c.variables.isEmpty() || c.recordCount <= 0 || c.recordIntervalMs <= 0 || c.csvPath.isEmpty())) {
                 error = QStringLiteral("record needs --vars, --count, --interval and --csv");
+                return std::nullopt;
+            }
+            // At most 4: what the scope's CSV and the IDE's Watch Variables take.
+            if (!record && (c.variables.isEmpty() || c.variables.size() > 4 || c.watchEveryMs <= 0 ||
+                            c.watchForSeconds <= 0 || c.csvPath.isEmpty())) {
+                error = QStringLiteral(
+                    "watch needs --vars with 1 to 4 names, --every MS (> 0), --for SECONDS (> 0) and --csv");
                 return std::nullopt;
             }
         } else {

@@ -11,16 +11,18 @@
 namespace app::cli {
 
 struct CliCommand {
-    enum class Kind { Check, Compile, Download, Upload, VarsDump, VarsSend, Send, Run, Stop, Record };
+    enum class Kind { Check, Compile, Download, Upload, VarsDump, VarsSend, Send, Run, Stop, Record, Watch };
     Kind kind = Kind::Send;
-    QStringList args;            // files, lines, label
-    double followSeconds = 0;    // run --follow
-    QStringList recordVariables; // record --vars
+    QStringList args;         // files, lines, label
+    double followSeconds = 0; // run --follow
+    QStringList variables;    // record --vars, watch --vars (upper case)
     int recordCount = 0;
     int recordIntervalMs = 0;
-    QString recordThen; // record --then "J 1000"
-    QString csvPath;    // record --csv
-    QString output;     // compile -o
+    QString recordThen;         // record --then "J 1000"
+    int watchEveryMs = 0;       // watch --every: from one poll to the next, ms
+    double watchForSeconds = 0; // watch --for
+    QString csvPath;            // record --csv, watch --csv
+    QString output;             // compile -o
 };
 
 struct CliOptions {

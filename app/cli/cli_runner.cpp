@@ -26,8 +26,9 @@ constexpr int kConnectTimeoutMs = 5000;
 bool needsDrive(const CliCommand& c) {
     return c.kind != CliCommand::Kind::Check && c.kind != CliCommand::Kind::Compile;
 }
+} // namespace
 
-QString displayName(drive_core::DriveFamily f) {
+QString familyDisplayName(drive_core::DriveFamily f) {
     switch (f) {
     case drive_core::DriveFamily::Bds5: return QStringLiteral("BDS5");
     case drive_core::DriveFamily::Sc750: return QStringLiteral("SC750");
@@ -35,7 +36,6 @@ QString displayName(drive_core::DriveFamily f) {
     }
     return {};
 }
-} // namespace
 
 CliRunner::CliRunner(CliOptions options, QObject* parent) : QObject(parent), m_options(std::move(options)) {
     m_progressOnTty = ::isatty(STDERR_FILENO) != 0;
@@ -51,6 +51,7 @@ CliRunner::~CliRunner() {
 void CliRunner::start() {
     if (!drive_core::familyFromName(m_options.drive.toStdString()))
         return fail(kUsage, QStringLiteral("unknown drive \"%1\" (bds5, sc750 or pmc960)").arg(m_options.drive));
+    if (!watchNamesKnown()) return;
     for (const CliCommand& c : m_options.commands) {
         if (!needsDrive(c)) continue;
         return connectDrive();
@@ -62,10 +63,13 @@ void CliRunner::connectDrive() {
     if (m_options.simulated) {
         // A record's trigger (--then "J 1000") goes out when the drive has accepted RECORD, a host round trip
         // later: at 20 times real time a 10 ms hiccup of a busy machine is 200 ms of drive time, a whole
-        // recording missed. With a trigger the drive runs in real time, as a real one would.
-        const bool triggered = std::any_of(m_options.commands.begin(), m_options.commands.end(),
-                                           [](const CliCommand& c) { return !c.recordThen.isEmpty(); });
-        m_speed = triggered ? 1.0 : kSimulatorSpeed;
+        // recording missed. With a trigger the drive runs in real time, as a real one would; with a watch too,
+        // whose samples are stamped by the host's clock.
+        const bool realTime =
+            std::any_of(m_options.commands.begin(), m_options.commands.end(), [](const CliCommand& c) {
+                return !c.recordThen.isEmpty() || c.kind == CliCommand::Kind::Watch;
+            });
+        m_speed = realTime ? 1.0 : kSimulatorSpeed;
         m_link = std::make_unique<serialport::SimulatorLink>(m_family,
                                                              serialport::SimulatorLink::Options{m_speed, 9600, false});
     } else {
@@ -85,7 +89,7 @@ void CliRunner::connectDrive() {
     connect(&m_deadline, &QTimer::timeout, this, [this] {
         if (m_following) return;
         fail(kNoAnswer, QStringLiteral("no answer from the %1 on %2 within %3 s")
-                            .arg(displayName(m_family), m_link->description())
+                            .arg(familyDisplayName(m_family), m_link->description())
                             .arg(kConnectTimeoutMs / 1000));
     });
     m_deadline.start(kConnectTimeoutMs);
@@ -101,11 +105,12 @@ void CliRunner::next() {
     case CliCommand::Kind::Download:
     case CliCommand::Kind::Upload: return transfer(c);
     case CliCommand::Kind::VarsDump:
-    case CliCommand::Kind::VarsSend: return bds5Vars(c);
+    case CliCommand::Kind::VarsSend: return vars(c);
     case CliCommand::Kind::Send: return sendLines(c.args, 0);
     case CliCommand::Kind::Run: return run(c);
     case CliCommand::Kind::Stop: return stop();
     case CliCommand::Kind::Record: return record(c);
+    case CliCommand::Kind::Watch: return watch(c);
     }
 }
 
@@ -168,7 +173,7 @@ void CliRunner::compile(const CliCommand& c) {
     if (m_family != drive_core::DriveFamily::Sc750)
         return fail(kUsage, QStringLiteral("compile: the %1 runs its program text as it is; only the SC750's "
                                            "ServoBASIC is compiled (--drive sc750)")
-                                .arg(displayName(m_family)));
+                                .arg(familyDisplayName(m_family)));
     QString error;
     const auto text = readTextFile(c.args[0], error);
     if (!text) return fail(kUsage, error);

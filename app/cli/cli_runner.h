@@ -1,8 +1,9 @@
 // servodesk-cli's engine: opens one connection (a fresh simulated drive, or a port) and runs the commands
 // in order through the family's DriveSession, the same contract and transfers as the IDE's. Event-driven:
 // main() runs the event loop and exits with done()'s code. stdout carries machine-readable output, stderr
-// progress and reasons. The verbs are the same for every family as far as the drive allows (issue 17);
-// vars and record are the BDS5's own (cli_bds5.cpp).
+// progress and reasons. The verbs are the same for every family as far as the drive allows (issue 17): vars
+// reads and writes each family's own file (cli_bds5.cpp, cli_parameter_transfer.cpp), watch polls every
+// family (cli_watch.cpp); record (RECORD/PLAY) is the BDS5's alone.
 #pragma once
 
 #include "cli_options.h"
@@ -25,6 +26,8 @@ struct Bds5TransferResult;
 } // namespace serialport
 
 namespace app::cli {
+
+QString familyDisplayName(drive_core::DriveFamily family); // "BDS5", "SC750", "PMC-960"
 
 class CliRunner final : public QObject {
     Q_OBJECT
@@ -52,7 +55,10 @@ private:
     void sendLines(const QStringList& lines, int index);
     void run(const CliCommand& c);
     void stop();
-    // The BDS5's own verbs (cli_bds5.cpp).
+    void vars(const CliCommand& c);  // cli_parameter_transfer.cpp
+    void watch(const CliCommand& c); // cli_watch.cpp
+    bool watchNamesKnown();          // fails with the family's names when a watch names another
+    // The BDS5's own ways (cli_bds5.cpp).
     serialport::Bds5Session* bds5Session();
     void bds5Vars(const CliCommand& c);
     void record(const CliCommand& c);

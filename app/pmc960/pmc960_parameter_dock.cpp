@@ -1,9 +1,9 @@
 // Pmc960ParameterDock: the table, its reads and its checked writes.
 #include "pmc960_parameter_dock.h"
 
-#include "pmc960_parameter_values.h"
 #include "pmc960_program_transfer.h"
 
+#include "serialport/pmc960_parameter_values.h"
 #include "serialport/pmc960_session.h"
 
 #include <QHBoxLayout>
@@ -17,17 +17,16 @@
 namespace app {
 
 namespace {
+using serialport::displayCommand;
+using serialport::isReadOnlyFromHost; // why some are left alone: see there
+using serialport::parameterName;
+using serialport::parameterWrite;
+using serialport::Pmc960Parameter;
+using serialport::rangeText;
+using serialport::valueFromDisplay;
+
 std::span<const Pmc960Parameter> parameters() {
     return drive_core::catalog::pmc960::parameters();
-}
-
-// Writing these through the table would cut the IDE off (baud, echo and number format, the prompt's axis
-// ID), start motion (G, J, D) or fight the table's own SW1/SW0.
-bool isReadOnly(const Pmc960Parameter& p) {
-    static const QStringList kReadOnly{QStringLiteral("THB"), QStringLiteral("THC"), QStringLiteral("THI"),
-                                       QStringLiteral("G"),   QStringLiteral("J"),   QStringLiteral("D"),
-                                       QStringLiteral("SW")};
-    return kReadOnly.contains(parameterName(p)) || displayCommand(p, '?').isEmpty();
 }
 } // namespace
 
@@ -73,10 +72,10 @@ Pmc960ParameterDock::Pmc960ParameterDock(QWidget* parent)
         m_table->setItem(row, DescriptionColumn, new QTableWidgetItem(description));
         for (int column = 0; column < ColumnCount; ++column) {
             QTableWidgetItem* item = m_table->item(row, column);
-            const bool editable = column == StoredColumn && !isReadOnly(p);
+            const bool editable = column == StoredColumn && !isReadOnlyFromHost(p);
             item->setFlags(editable ? item->flags() | Qt::ItemIsEditable : item->flags() & ~Qt::ItemIsEditable);
         }
-        if (isReadOnly(p)) m_table->item(row, StoredColumn)->setToolTip(tr("Read only in this table"));
+        if (isReadOnlyFromHost(p)) m_table->item(row, StoredColumn)->setToolTip(tr("Read only in this table"));
     }
     m_updating = false;
     m_table->resizeColumnsToContents();
@@ -174,11 +173,11 @@ bool Pmc960ParameterDock::setStoredValue(const QString& name, const QString& tex
     const int row = rowOf(name);
     if (row < 0 || !m_session) return false;
     const Pmc960Parameter& p = parameters()[std::size_t(row)];
-    if (isReadOnly(p)) {
+    if (isReadOnlyFromHost(p)) {
         showMessage(tr("%1 is read only in this table.").arg(name), true);
         return false;
     }
-    const ParameterWrite write = parameterWrite(p, text);
+    const serialport::ParameterWrite write = parameterWrite(p, text);
     if (!write.error.isEmpty()) {
         showMessage(write.error, true);
         return false;

@@ -13,6 +13,7 @@
 
 #include "drive_core/catalog/sc750_catalog.h"
 #include "editor/program_editor.h"
+#include "serialport/sc750_parameter_file.h"
 
 #include <QDialogButtonBox>
 #include <QFile>
@@ -45,13 +46,14 @@ Sc750ControllerMenu::Sc750ControllerMenu(Sc750Workspace& workspace, QWidget* par
 }
 
 QString Sc750ControllerMenu::boilerplate() {
-    QStringList lines{QStringLiteral("'-----Parameter Values Header-----"), QStringLiteral("PARAMS START")};
+    QList<QPair<QString, QString>> values;
     for (const catalog::VariableInfo& v : catalog::variables()) {
         if (v.access != catalog::Access::Parameter) continue;
-        const QString name = QString::fromLatin1(v.name.data(), qsizetype(v.name.size()));
-        lines << QStringLiteral("%1 = %2").arg(name).arg(v.defaultValue);
+        const std::string name(v.name);
+        values.append({QString::fromStdString(name), serialport::Sc750ParameterFile::formatValue(name, v.defaultValue)});
     }
-    lines << QStringLiteral("PARAMS END") << QString() << QStringLiteral("'----- Variable Definitions -----")
+    QStringList lines{QStringLiteral("'-----Parameter Values Header-----"), serialport::Sc750ParameterFile::block(values)};
+    lines << QString() << QStringLiteral("'----- Variable Definitions -----")
           << QStringLiteral("' for help put cursor on -> DIM <- and press the F1 key") << QString()
           << QStringLiteral("'----- Main Program -----") << QString() << QStringLiteral("END") << QString()
           << QStringLiteral("'----- Subroutines and Interrupt Routines -----") << QString();

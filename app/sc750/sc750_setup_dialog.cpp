@@ -9,6 +9,7 @@
 #include "drive_core/catalog/sc750_catalog.h"
 #include "drive_core/catalog/sc750_motors.h"
 #include "editor/program_editor.h"
+#include "serialport/sc750_parameter_file.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -21,11 +22,8 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QRadioButton>
-#include <QRegularExpression>
 #include <QTableWidget>
 #include <QVBoxLayout>
-
-#include <cmath>
 
 namespace app {
 
@@ -101,14 +99,6 @@ void Sc750SetupDialog::setMotorPart(const QString& part) {
     m_part->setText(part);
 }
 
-// As Motion Dialogue writes the PARAMS block (L2505-2525): an integer parameter plain ("ILC = 59"), a real
-// one with six decimals ("SIX.THRESH = 3147.836538", "KVI = 5.000000").
-QString Sc750SetupDialog::paramsValue(const std::string& name, double value) {
-    const catalog::VariableInfo* info = catalog::findVariable(name);
-    if (info && info->type == catalog::ValueType::Integer) return QString::number(std::llround(value));
-    return QString::number(value, 'f', 6);
-}
-
 void Sc750SetupDialog::compute() {
     m_fromProgram = false;
     const bool gentle = m_response->currentIndex() == 1;
@@ -129,27 +119,20 @@ void Sc750SetupDialog::compute() {
         auto* name = new QTableWidgetItem(QString::fromStdString(values[std::size_t(row)].first));
         name->setFlags(name->flags() & ~Qt::ItemIsEditable);
         m_table->setItem(row, 0, name);
-        m_table->setItem(row, 1, new QTableWidgetItem(paramsValue(values[std::size_t(row)].first,
-                                                                  values[std::size_t(row)].second)));
+        m_table->setItem(row, 1,
+                         new QTableWidgetItem(serialport::Sc750ParameterFile::formatValue(
+                             values[std::size_t(row)].first, values[std::size_t(row)].second)));
     }
     showMode();
 }
 
 void Sc750SetupDialog::loadParams(const QString& text) {
     setManual(true);
-    static const QRegularExpression assignment(QStringLiteral("^\\s*([A-Za-z][A-Za-z0-9._]*)\\s*=\\s*([-+0-9.Ee]+)"));
-    bool inBlock = false;
-    for (const QString& line : text.split(QLatin1Char('\n'))) {
-        const QString word = line.simplified().toUpper();
-        if (word.startsWith(QLatin1String("PARAMS START")))
-            inBlock = true;
-        else if (word.startsWith(QLatin1String("PARAMS END")))
-            break;
-        else if (const auto m = assignment.match(line); inBlock && m.hasMatch())
-            for (int row = 0; row < m_table->rowCount(); ++row)
-                if (m_table->item(row, 0)->text().compare(m.captured(1), Qt::CaseInsensitive) == 0)
-                    m_table->item(row, 1)->setText(m.captured(2));
-    }
+    const serialport::Sc750ParameterFile file = serialport::Sc750ParameterFile::parse(text);
+    for (const serialport::Sc750ParameterAssignment& a : file.assignments())
+        for (int row = 0; row < m_table->rowCount(); ++row)
+            if (m_table->item(row, 0)->text().compare(a.name, Qt::CaseInsensitive) == 0)
+                m_table->item(row, 1)->setText(a.value);
     m_fromProgram = true;
     setStatus(tr("The program's PARAMS values: edit them (editing the motor's data recomputes them), then OK."), false);
 }
@@ -190,21 +173,10 @@ void Sc750SetupDialog::setGentle(bool gentle) {
 }
 
 QString Sc750SetupDialog::paramsBlock() const {
-    QStringList lines{QStringLiteral("PARAMS START")};
+    QList<QPair<QString, QString>> values;
     for (int row = 0; row < m_table->rowCount(); ++row)
-        lines << QStringLiteral("%1 = %2").arg(m_table->item(row, 0)->text(), m_table->item(row, 1)->text().trimmed());
-    lines << QStringLiteral("PARAMS END");
-    return lines.join(QLatin1Char('\n'));
-}
-
-QString Sc750SetupDialog::withParams(const QString& text, const QString& block) {
-    static const QRegularExpression existing(
-        QStringLiteral("^[ \\t]*PARAMS[ \\t]+START\\b.*?^[ \\t]*PARAMS[ \\t]+END[^\\n]*"),
-        QRegularExpression::CaseInsensitiveOption | QRegularExpression::MultilineOption |
-            QRegularExpression::DotMatchesEverythingOption);
-    const QRegularExpressionMatch match = existing.match(text);
-    if (match.hasMatch()) return QString(text).replace(match.capturedStart(), match.capturedLength(), block);
-    return QStringLiteral("'-----Parameter Values Header-----\n") + block + QStringLiteral("\n\n") + text;
+        values.append({m_table->item(row, 0)->text(), m_table->item(row, 1)->text()});
+    return serialport::Sc750ParameterFile::block(values);
 }
 
 void Sc750SetupDialog::apply() {
@@ -214,7 +186,7 @@ void Sc750SetupDialog::apply() {
     if (!part.isEmpty()) block = QStringLiteral("' Motor %1, %2\n").arg(part, m_response->currentText()) + block;
     editor->beginUndoAction();
     editor->selectAll();
-    editor->replaceSelectedText(withParams(editor->text(), block));
+    editor->replaceSelectedText(serialport::Sc750ParameterFile::withBlock(editor->text(), block));
     editor->endUndoAction();
     editor->setCursorPosition(0, 0);
     accept();

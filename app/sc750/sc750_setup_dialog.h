@@ -12,8 +12,6 @@
 // 100/500 Hz (large inertia mismatch, belts). The System Response choice serves both modes.
 #pragma once
 
-#include <string>
-
 #include <QDialog>
 
 class QComboBox;
@@ -34,12 +32,8 @@ class Sc750SetupDialog final : public QDialog {
 public:
     Sc750SetupDialog(Sc750Workspace& workspace, QWidget* parent = nullptr);
 
-    // "PARAMS START" ... "PARAMS END" for the values in the table.
+    // "PARAMS START" ... "PARAMS END" for the values in the table (serialport/sc750_parameter_file.h).
     QString paramsBlock() const;
-    // Replaces the PARAMS block of text (or puts one at the top) with block.
-    static QString withParams(const QString& text, const QString& block);
-    // A parameter's value as the PARAMS block shows it.
-    static QString paramsValue(const std::string& name, double value);
 
     // File > Edit Parameters: Manual, with the values of text's PARAMS block where it has them.
     void loadParams(const QString& text);

@@ -74,7 +74,7 @@ ScreenshotTour::Step wizardStep(MainWindow& window, std::shared_ptr<QPointer<Set
                     if (act) act(w);
                 },
             .ready = [wizard, ready] { return *wizard && (!ready || ready(**wizard)); },
-            .grab = [wizard] { return *wizard ? (*wizard)->grab() : QPixmap(); }};
+            .grab = [wizard] { return TourShot::of(*wizard); }};
 }
 } // namespace
 
@@ -100,7 +100,7 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
                                     !m.value(QStringLiteral("IDEN")).isEmpty() &&
                                     m.value(QStringLiteral("X1")) == QLatin1String("1234");
                          },
-                     .grab = [variables] { return variables->grab(); },
+                     .grab = [variables] { return TourShot::of(variables); },
                      .cleanUp = [variables] { variables->hide(); }});
 
     ErrorLogDock* errors = window.errorLogDock();
@@ -126,7 +126,7 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
                  return rowsFrom(m, ErrorLogModel::Origin::Reported) >= 3 && driveReady(window) &&
                         rowsFrom(m, ErrorLogModel::Origin::History) >= 4;
              },
-         .grab = [errors] { return errors->grab(); },
+         .grab = [errors] { return TourShot::of(errors); },
          .cleanUp = [errors] { errors->hide(); }});
 
     auto wizard = std::make_shared<QPointer<SetupWizard>>();
@@ -183,7 +183,7 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
              },
          .ready = [&window,
                    dep] { return driveReady(window) && dep->screen().line(0).startsWith(QStringLiteral("SPEED")); },
-         .grab = [dep] { return dep->grab(); },
+         .grab = [dep] { return TourShot::of(dep); },
          .cleanUp = [dep] { dep->hide(); }});
 
     IoPanel* io = window.ioPanel();
@@ -198,7 +198,7 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
                              });
                          },
                      .ready = [io] { return io->outputLit(1) && io->outputLit(4) && io->inputButton(5)->isChecked(); },
-                     .grab = [io] { return io->grab(); },
+                     .grab = [io] { return TourShot::of(io); },
                      .cleanUp = [io] { io->hide(); }});
     return steps;
 }

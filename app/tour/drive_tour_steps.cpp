@@ -98,7 +98,7 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
                              }
                              return false;
                          },
-                     .grab = [&window] { return window.grab(); }});
+                     .grab = [&window] { return TourShot::of(&window); }});
     // Continue (SS OFF): 55$ runs on to its B and the drive is back at -->.
     steps.push_back({.name = QStringLiteral("debug-continue"),
                      .act = [&window] { window.driveActions().continueAction()->trigger(); },
@@ -119,7 +119,7 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
                              return window.terminal()->text().count(QStringLiteral("t...  P \"PASS \" X3")) >= 4 &&
                                     window.debugHighlighter().currentLine() >= 17;
                          },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .text = [&window] { return window.terminal()->text(); },
                      .cleanUp =
                          [&window] {
@@ -138,7 +138,7 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
                              return driveReady(window) && window.captureDock()->isVisible() &&
                                     window.captureDock()->shownText().contains(QStringLiteral("<^X>"));
                          },
-                     .grab = [&window] { return window.captureDock()->grab(); },
+                     .grab = [&window] { return TourShot::of(window.captureDock()); },
                      .text = [&window] { return window.captureDock()->shownText(); },
                      .cleanUp =
                          [&window] {
@@ -154,7 +154,7 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
                                  (*dialog)->showPage(page);
                              },
                          .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
-                         .grab = [dialog] { return *dialog ? (*dialog)->grab() : QPixmap(); },
+                         .grab = [dialog] { return TourShot::of(*dialog); },
                          .cleanUp =
                              [dialog] {
                                  if (*dialog) (*dialog)->reject();
@@ -163,7 +163,7 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
     steps.push_back({.name = QStringLiteral("help-reference"),
                      .act = [&window] { window.helpBrowser()->showTopic(QStringLiteral("ERR 25")); },
                      .ready = [&window] { return window.helpBrowser()->isVisible(); },
-                     .grab = [&window] { return window.helpBrowser()->grab(); },
+                     .grab = [&window] { return TourShot::of(window.helpBrowser()); },
                      .text = [&window] { return window.helpBrowser()->pageText(); },
                      .cleanUp = [&window] { window.helpBrowser()->hide(); }});
     return steps;

@@ -12,10 +12,8 @@
 #include "editor/help_popup.h"
 #include "editor/program_editor.h"
 
-#include <QApplication>
 #include <QCoreApplication>
 #include <QKeyEvent>
-#include <QPainter>
 #include <QPointer>
 
 #include <memory>
@@ -55,19 +53,6 @@ const QString kCellProgram = QStringLiteral("; PICK AND PLACE CELL - WHAT THE DR
                                             "P \"ERROR \" LSTERR\n"
                                             "B\n");
 
-// The window with its visible tool-tip and popup windows (help, completion list) painted where they are.
-QPixmap grabWithPopups(QWidget& window) {
-    QPixmap picture = window.grab();
-    QPainter painter(&picture);
-    for (QWidget* top : QApplication::topLevelWidgets()) {
-        if (top == &window || !top->isVisible()) continue;
-        const Qt::WindowType type = top->windowType();
-        if (type != Qt::ToolTip && type != Qt::Popup) continue;
-        painter.drawPixmap(window.mapFromGlobal(top->mapToGlobal(QPoint(0, 0))), top->grab());
-    }
-    return picture;
-}
-
 void typeInto(QWidget* widget, const QString& text) {
     for (const QChar ch : text) {
         QKeyEvent press(QEvent::KeyPress, ch.toUpper().unicode(), Qt::NoModifier, QString(ch));
@@ -101,7 +86,7 @@ std::vector<ScreenshotTour::Step> editorTourSteps(MainWindow& window) {
                              const editor::Bds5Diagnostics* d = diagnostics();
                              return d && !d->pending() && d->errorCount() == 5;
                          },
-                     .grab = [&window] { return window.grab(); }});
+                     .grab = [&window] { return TourShot::of(&window); }});
     steps.push_back({.name = QStringLiteral("editor-help"),
                      .act =
                          [editor] {
@@ -113,7 +98,7 @@ std::vector<ScreenshotTour::Step> editorTourSteps(MainWindow& window) {
                              editor::Bds5Language* language = editor::Bds5Language::of(*editor);
                              return language && language->helpPopup()->isVisible();
                          },
-                     .grab = [&window] { return grabWithPopups(window); },
+                     .grab = [&window] { return TourShot::withPopups(&window); },
                      .cleanUp =
                          [&window, editor] {
                              editor::Bds5Language::of(*editor)->hideHelp();
@@ -129,7 +114,7 @@ std::vector<ScreenshotTour::Step> editorTourSteps(MainWindow& window) {
                              typeInto(*editor, QStringLiteral("  X3=PE"));
                          },
                      .ready = [editor] { return *editor && (*editor)->isListActive(); },
-                     .grab = [&window] { return grabWithPopups(window); },
+                     .grab = [&window] { return TourShot::withPopups(&window); },
                      .cleanUp =
                          [&window, editor] {
                              if (!*editor) return;

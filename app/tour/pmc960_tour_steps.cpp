@@ -85,7 +85,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          auto* language = *demo ? MplLanguage::of(*demo) : nullptr;
                          return language && language->helpPopup()->isVisible();
                      },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::withPopups(&window); }, // with the help it waits for
                      .cleanUp = [demo] {
                          if (auto* language = *demo ? MplLanguage::of(*demo) : nullptr) language->hideHelp();
                      }});
@@ -117,7 +117,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          return position > 1000 && position < 11000 && status->value(QStringLiteral("velocity")).toInt() != 0 &&
                                 status->value(QStringLiteral("outputs")) == QLatin1String("0005");
                      },
-                     .grab = [&window] { return pmc960(window)->statusDock()->grab(); },
+                     .grab = [&window] { return TourShot::of(pmc960(window)->statusDock()); },
                      .cleanUp = [&window] { pmc960(window)->statusDock()->setFloating(false); }});
     steps.push_back({.name = QStringLiteral("pmc960-parameters"),
                      .act = [&window] {
@@ -131,7 +131,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          Pmc960ParameterDock* table = pmc960(window)->parameterDock();
                          return table->pendingReads() == 0 && table->stored(QStringLiteral("TGP")) == QLatin1String("24");
                      },
-                     .grab = [&window] { return pmc960(window)->parameterDock()->grab(); },
+                     .grab = [&window] { return TourShot::of(pmc960(window)->parameterDock()); },
                      .cleanUp = [&window] { pmc960(window)->parameterDock()->setFloating(false); }});
     // Watch Variables on the PMC-960: position and following error from status polls during an index.
     auto watch = std::make_shared<QPointer<WatchView>>();
@@ -155,7 +155,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          // the index has run for a while: a ramp with samples on both sides of it
                          return *indexed && samples.size() > 40 && samples.front().value - samples.back().value > 20000;
                      },
-                     .grab = [watch] { return *watch ? (*watch)->grab() : QPixmap(); },
+                     .grab = [watch] { return TourShot::of(*watch); },
                      .cleanUp = [watch] {
                          if (*watch) (*watch)->close();
                      }});
@@ -209,7 +209,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          }
                          return reported >= 2 && history >= 1;
                      },
-                     .grab = [&window] { return window.errorLogDock()->grab(); },
+                     .grab = [&window] { return TourShot::of(window.errorLogDock()); },
                      .cleanUp = [&window, demo] {
                          window.errorLogDock()->setFloating(false);
                          window.errorLogDock()->hide();

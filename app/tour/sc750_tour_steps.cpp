@@ -100,9 +100,8 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                          },
                      .grab =
                          [&window] {
-                             const QPixmap all = window.grab();
-                             const int height = 300 * int(all.devicePixelRatio());
-                             return all.copy(QRect(0, all.height() - height, all.width(), height));
+                             return TourShot::of(&window).cropped(
+                                 QRect(0, window.height() - 300, window.width(), 300));
                          },
                      .text =
                          [&window] {
@@ -125,7 +124,7 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                          // three indexes or more on the chart
                          return samples.size() > 40 && samples.back().value - samples.front().value > 3 * 10240;
                      },
-                     .grab = [watch] { return *watch ? (*watch)->grab() : QPixmap(); },
+                     .grab = [watch] { return TourShot::of(*watch); },
                      .cleanUp = [watch] {
                          if (*watch) (*watch)->close();
                      }});
@@ -146,7 +145,7 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      .ready = [&window] {
                          return !sc750(window)->variablesDock()->value(QStringLiteral("POS.COMMAND")).isEmpty();
                      },
-                     .grab = [&window] { return window.grab(); }});
+                     .grab = [&window] { return TourShot::of(&window); }});
     // The variable browser: every predefined variable, grouped, the rows in view read live.
     steps.push_back({.name = QStringLiteral("variables-sc750-all"),
                      .act = [&window] {
@@ -162,7 +161,7 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                              if (browser->value(QString::fromLatin1(name)).isEmpty()) return false; // all in view read
                          return true;
                      },
-                     .grab = [&window] { return sc750(window)->variablesDock()->grab(); },
+                     .grab = [&window] { return TourShot::of(sc750(window)->variablesDock()); },
                      .cleanUp = [&window] {
                          Sc750VariablesDock* vars = sc750(window)->variablesDock();
                          vars->setFloating(false);
@@ -174,7 +173,9 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                          auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"));
                          return dialog && dialog->isVisible();
                      },
-                     .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))->grab(); },
+                     .grab = [&window] {
+                         return TourShot::of(window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog")));
+                     },
                      .cleanUp = [&window] {
                          if (auto* dialog = window.findChild<QWidget*>(QStringLiteral("sc750FunctionDialog"))) dialog->close();
                      }});
@@ -197,7 +198,7 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                  return dialog && dialog->isVisible() && dialog->controllerModel() != 0 &&
                         !dialog->table()->findItems(QStringLiteral("KVP"), Qt::MatchExactly).isEmpty();
              },
-         .grab = [&window] { return window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"))->grab(); },
+         .grab = [&window] { return TourShot::of(window.findChild<QWidget*>(QStringLiteral("sc750SetupDialog"))); },
          .cleanUp =
              [&window] {
                  if (auto* dialog = window.findChild<QDialog*>(QStringLiteral("sc750SetupDialog"))) dialog->reject();
@@ -211,7 +212,7 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                          ws->debugger().compile();
                      },
                      .ready = [&window] { return !sc750(window)->debugger().lastError().isEmpty(); },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .cleanUp = [&window, demo, outlineShown] {
                          sc750(window)->debugger().reset();
                          sc750(window)->outputDock()->hide();

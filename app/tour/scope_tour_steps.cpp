@@ -60,22 +60,20 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
                              scope.record(tourStep());
                          },
                      .ready =
-                         [&scope] {
+                         [&window, &scope] {
                              if (!scope.lastCapture() || TransferDialog::active()) return false;
                              scope.view()->plot()->setCursors(0.020, 0.070);
+                             // Here, not at the grab: the layout must have turns of the event loop to apply it.
+                             window.resizeDocks({scope.scopeDock()}, {470}, Qt::Vertical);
                              return true;
                          },
-                     .grab =
-                         [&window, &scope] {
-                             window.resizeDocks({scope.scopeDock()}, {470}, Qt::Vertical);
-                             return window.grab();
-                         },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .text = [&scope] { return QString::fromStdString(scope.view()->plot()->readout().text()); }});
     auto data = std::make_shared<QPointer<QDialog>>();
     steps.push_back({.name = QStringLiteral("scope-data"),
                      .act = [&scope, data] { *data = scope.viewData(); },
                      .ready = [data] { return *data && (*data)->isVisible(); },
-                     .grab = [data] { return (*data)->grab(); },
+                     .grab = [data] { return TourShot::of(*data); },
                      .cleanUp =
                          [data] {
                              if (*data) (*data)->close();
@@ -97,7 +95,7 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
     steps.push_back(first);
     steps.push_back(tuningRun(window, QStringLiteral("tuning-run-2"), 2, 3000));
     ScreenshotTour::Step third = tuningRun(window, QStringLiteral("tuning-panel"), 3, 1200);
-    third.grab = [&scope] { return scope.tuningDock()->grab(); };
+    third.grab = [&scope] { return TourShot::of(scope.tuningDock()); };
     third.text = [panel] { return panel->statusText(); };
     third.cleanUp = [&window, &scope] {
         scope.tuningDock()->hide();
@@ -128,7 +126,7 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
         if (!*bode) *bode = scope.frequencyResponse();
         return (*bode)->isVisible();
     };
-    response.grab = [bode] { return (*bode)->grab(); };
+    response.grab = [bode] { return TourShot::of(*bode); };
     response.text = [bode] { return (*bode)->summary(); };
     response.cleanUp = [&window, bode] {
         if (*bode) (*bode)->close();

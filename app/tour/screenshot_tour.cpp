@@ -14,6 +14,7 @@
 #include "scope_tour_steps.h"
 #include "sc750_tour_steps.h"
 #include "pmc960_tour_steps.h"
+#include "shot_facts.h"
 
 #include "drive_core/bds5/bds5_drive.h"
 #include "editor/program_editor.h"
@@ -68,11 +69,11 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
         {.name = QStringLiteral("hello-world"),
          .act = [this] { typeIntoTerminal(QStringLiteral("P \"%1\"\r").arg(kHello)); },
          .ready = [this, driveReady] { return terminalShowsPromptAfter(kHello) && driveReady(); }});
-    steps.push_back({.name = QStringLiteral("main-window"), .grab = [this] { return m_window.grab(); }});
+    steps.push_back({.name = QStringLiteral("main-window"), .grab = [this] { return TourShot::of(&m_window); }});
     steps.push_back({.name = QStringLiteral("terminal"),
-                     .grab = [this] { return m_window.terminalDock()->grab(); },
+                     .grab = [this] { return TourShot::of(m_window.terminalDock()); },
                      .text = [terminal] { return terminal->text(); }});
-    steps.push_back({.name = QStringLiteral("editor"), .grab = [this] { return m_window.editor()->grab(); }});
+    steps.push_back({.name = QStringLiteral("editor"), .grab = [this] { return TourShot::of(m_window.editor()); }});
     steps.push_back({.name = QStringLiteral("connection-dialog"),
                      .act =
                          [this, dialog] {
@@ -80,7 +81,7 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
                              (*dialog)->setChoice(ConnectionChoice::simulator());
                          },
                      .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
-                     .grab = [dialog] { return *dialog ? (*dialog)->grab() : QPixmap(); },
+                     .grab = [dialog] { return TourShot::of(*dialog); },
                      .cleanUp =
                          [dialog] {
                              if (*dialog) (*dialog)->reject();
@@ -122,14 +123,7 @@ void ScreenshotTour::poll() {
     }
     if (++m_settleTicks < kSettleTicks) return;
     m_timer.stop();
-    if (step.grab) {
-        const QString path = m_outputDir.absoluteFilePath(step.name + QStringLiteral(".png"));
-        if (!step.grab().save(path)) {
-            fail(tr("cannot write %1").arg(path));
-            return;
-        }
-        QTextStream(stdout) << path << Qt::endl;
-    }
+    if (step.grab && !save(step.name, step.grab())) return;
     if (step.text) {
         const QString path = m_outputDir.absoluteFilePath(step.name + QStringLiteral(".txt"));
         QFile file(path);
@@ -142,6 +136,19 @@ void ScreenshotTour::poll() {
     if (step.cleanUp) step.cleanUp();
     ++m_current;
     beginStep();
+}
+
+// "<name>.png", and beside it what the picture shows, read from its widgets now: "<name>.png.facts".
+bool ScreenshotTour::save(const QString& name, const TourShot& shot) {
+    const QString path = m_outputDir.absoluteFilePath(name + QStringLiteral(".png"));
+    QFile facts(path + QStringLiteral(".facts"));
+    if (!shot.picture.save(path) || !facts.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+        facts.write((shotFacts(shot).join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8()) < 0) {
+        fail(tr("cannot write %1").arg(path));
+        return false;
+    }
+    QTextStream(stdout) << path << Qt::endl;
+    return true;
 }
 
 void ScreenshotTour::fail(const QString& why) {

@@ -1,12 +1,14 @@
 // ScreenshotTour: `servodesk --screenshot-tour DIR`. Walks a list of named steps over a shown MainWindow
 // connected to the simulated drive — act, wait (polling on a timer, never blocking) until the view shows
-// what it should, save "<name>.png" — then reports finished(0), or finished(1) on a time-out.
+// what it should, save "<name>.png" and what it shows, "<name>.png.facts" (see shot_facts.h) — then reports
+// finished(0), or finished(1) on a time-out.
 // Later views join the tour by appending steps in buildSteps().
 #pragma once
 
+#include "tour_shot.h"
+
 #include <QDir>
 #include <QObject>
-#include <QPixmap>
 #include <QSize>
 #include <QTimer>
 
@@ -30,7 +32,7 @@ public:
         QString name;                  // names the PNG ("terminal" -> terminal.png) and time-out messages
         std::function<void()> act;     // optional: what a user would do first (type, open a dialog)
         std::function<bool()> ready;   // optional: polled until true before the grab
-        std::function<QPixmap()> grab; // optional: the picture to save; no picture when empty
+        std::function<TourShot()> grab; // optional: the picture to save, with its widgets; none when empty
         std::function<QString()> text; // optional: what the view says, saved as "<name>.txt" for tests
         std::function<void()> cleanUp; // optional: after the grab (close the dialog)
         std::function<QString()> state; // optional: what the step waits on, said when it times out
@@ -49,6 +51,7 @@ private:
     void beginStep();
     void poll();
     void fail(const QString& why);
+    bool save(const QString& name, const TourShot& shot);
     void typeIntoTerminal(const QString& text);
     bool terminalShowsPromptAfter(const QString& line) const;
 

@@ -97,7 +97,7 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
                              sendKey(editor, Qt::Key_K, Qt::ControlModifier);
                          },
                      .ready = [tabs, opened] { return opened->size() == 3 && tabs->count() >= 4; },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .cleanUp = [area] { area->reloadKeymap(); }});
 
     steps.push_back({.name = QStringLiteral("editor-find"),
@@ -113,7 +113,7 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
                              find->findNext();
                          },
                      .ready = [area] { return area->findBar()->isVisible(); },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .text = [area] { return area->findBar()->statusText(); },
                      .cleanUp =
                          [area] {
@@ -129,7 +129,7 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
                              (*goToLine)->setLineNumber(6);
                          },
                      .ready = [goToLine] { return *goToLine && (*goToLine)->isVisible(); },
-                     .grab = [goToLine] { return *goToLine ? (*goToLine)->grab() : QPixmap(); },
+                     .grab = [goToLine] { return TourShot::of(*goToLine); },
                      .cleanUp =
                          [goToLine] {
                              if (*goToLine) (*goToLine)->reject();
@@ -138,7 +138,7 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
     steps.push_back({.name = QStringLiteral("editor-size"),
                      .act = [area, sizeDialog] { *sizeDialog = area->actions()->showSize(); },
                      .ready = [sizeDialog] { return *sizeDialog && (*sizeDialog)->isVisible(); },
-                     .grab = [sizeDialog] { return *sizeDialog ? (*sizeDialog)->grab() : QPixmap(); },
+                     .grab = [sizeDialog] { return TourShot::of(*sizeDialog); },
                      .text = [sizeDialog] { return *sizeDialog ? (*sizeDialog)->figuresText() : QString(); },
                      .cleanUp =
                          [tabs, opened, sizeDialog] {

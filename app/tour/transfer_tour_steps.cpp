@@ -50,14 +50,13 @@ QString tourProgram() {
 }
 
 // The window with the (separate, non-modal) transfer dialog drawn over its centre, as the user sees them.
-QPixmap windowWithDialog(MainWindow& window) {
-    QPixmap shot = window.grab();
+TourShot windowWithDialog(MainWindow& window) {
+    TourShot shot = TourShot::of(&window);
     if (TransferDialog* dialog = window.findChild<TransferDialog*>(); dialog && dialog->isVisible()) {
-        const QPixmap over = dialog->grab();
-        QPainter painter(&shot);
-        const QPoint at((shot.width() - over.width()) / 2, (shot.height() - over.height()) / 3);
-        painter.fillRect(QRect(at, over.size()).adjusted(-1, -1, 1, 1), QColor(0x60, 0x60, 0x60));
-        painter.drawPixmap(at, over);
+        const QSize room = window.size() - dialog->size();
+        const QPoint at(room.width() / 2, room.height() / 3);
+        QPainter(&shot.picture).fillRect(QRect(at, dialog->size()).adjusted(-1, -1, 1, 1), QColor(0x60, 0x60, 0x60));
+        shot.paintOver(dialog, at);
     }
     return shot;
 }
@@ -99,7 +98,7 @@ std::vector<ScreenshotTour::Step> transferTourSteps(MainWindow& window) {
                              return !TransferDialog::active() &&
                                     statusSays(window, QStringLiteral("Verified"));
                          },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .text = [&window] { return window.statusBar()->currentMessage(); }});
     steps.push_back({.name = QStringLiteral("program-error-line"),
                      .act =
@@ -114,7 +113,7 @@ std::vector<ScreenshotTour::Step> transferTourSteps(MainWindow& window) {
                              return !TransferMarkers::markedLines(*window.editor()).isEmpty() &&
                                     window.terminal()->text().endsWith(QStringLiteral("-->"));
                          },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .text =
                          [&window] {
                              return QStringLiteral("marked lines: %1\n%2")
@@ -128,7 +127,7 @@ std::vector<ScreenshotTour::Step> transferTourSteps(MainWindow& window) {
                              return !TransferDialog::active() &&
                                     window.windowTitle().startsWith(QStringLiteral("drive-variables"));
                          },
-                     .grab = [&window] { return window.grab(); },
+                     .grab = [&window] { return TourShot::of(&window); },
                      .text = [&window] { return window.editor()->text(); },
                      // Later steps expect the tour's first tab (the sample program) in front again.
                      .cleanUp = [&window] { window.editorArea()->tabs()->setCurrentIndex(0); }});

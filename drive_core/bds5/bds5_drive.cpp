@@ -23,6 +23,9 @@ constexpr std::string_view kMonitorPrompt = "==>";
 constexpr std::string_view kLoadPrompt = "l->";
 // Error lines after a command, or out of a running program, follow CR LF LF (L9802-9806, L9857-9861).
 constexpr std::string_view kErrorPreamble = "\r\n\n";
+// The dedicated inputs (L820-836).
+constexpr std::array<std::string_view, 7> kDedicatedInputs{"REMOTE", "HOME", "CYCLE", "LIMIT",
+                                                           "MOTION", "GATE", "MANUAL"};
 } // namespace
 
 Bds5Drive::Bds5Drive() {
@@ -34,16 +37,23 @@ void Bds5Drive::powerUp() {
     // Power lost in the middle of a change to program memory (editor, >BDS) leaves it corrupt (L3712).
     if (m_powered && (m_mode == Bds5DriveMode::Editor || (m_mode == Bds5DriveMode::ProgramLoad && m_loadStarted)))
         m_state.program.setCorrupt(true);
-    // Inputs are wires, not memory: a power cycle does not change what they read.
-    std::vector<std::pair<std::string, std::int32_t>> inputs;
-    for (int i = 1; i <= kInputCount; ++i) inputs.emplace_back("I" + std::to_string(i), 0);
-    for (const char* name : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"})
-        inputs.emplace_back(name, 0);
-    for (auto& [name, value] : inputs) value = m_state.variables.read(name).value_or(0);
+    // Inputs are wires, not memory: a power cycle does not change what they read. I1-I16 and the dedicated
+    // inputs, resolved once (a drive powers up for every input the fuzzer runs).
+    constexpr std::size_t kPins = kInputCount + kDedicatedInputs.size();
+    static const auto pins = [] {
+        std::array<catalog::bds5::VariableRef, kPins> refs{};
+        for (int i = 1; i <= kInputCount; ++i)
+            refs[std::size_t(i - 1)] = *catalog::bds5::findVariable("I" + std::to_string(i));
+        for (std::size_t i = 0; i < kDedicatedInputs.size(); ++i)
+            refs[kInputCount + i] = *catalog::bds5::findVariable(kDedicatedInputs[i]);
+        return refs;
+    }();
+    std::array<std::int32_t, kPins> inputs{};
+    for (std::size_t i = 0; i < kPins; ++i) inputs[i] = m_state.variables.readUser(pins[i]);
     m_state.variables.powerUp();
     m_state.recorder.clear(); // the RECORD buffer is cleared at power-up (Table 3.2 notes)
     if (m_poweredBefore)
-        for (const auto& [name, value] : inputs) m_state.variables.set(name, value);
+        for (std::size_t i = 0; i < kPins; ++i) m_state.variables.set(pins[i], inputs[i]);
     m_poweredBefore = true;
     m_state.enabled = false;
     m_state.servo.powerUp();
@@ -61,11 +71,11 @@ void Bds5Drive::powerUp() {
     // Autobaud (digest §2.2): MOTION off at power-up (which also forces ADDR=0), ABAUD on with ADDR 0, or
     // an invalid BAUD (ERR 103, history only). ABAUD on with ADDR set is ERR 104, history only.
     bool autobaud = false;
-    if (!switchOn("MOTION", true)) {
+    if (!switchOn(Switch::Motion, true)) {
         m_state.variables.set("ADDR", 0);
         autobaud = true;
     }
-    const bool abaud = switchOn("ABAUD", false);
+    const bool abaud = switchOn(Switch::Abaud, false);
     if (abaud && addressId())
         logError(m_state, 104);
     else if (abaud)
@@ -79,7 +89,7 @@ void Bds5Drive::powerUp() {
 
 // Sign-on, then POWER-UP$ or the prompt (L4929-4944).
 void Bds5Drive::establishCommunications() {
-    if (switchOn("MSG", true)) {
+    if (switchOn(Switch::Msg, true)) {
         transmit(kCrLf);
         transmit(kSignOn);
         transmit(kCrLf);
@@ -116,8 +126,9 @@ void Bds5Drive::step(Microseconds dt) {
     static const auto serial = *catalog::bds5::findVariable("SERIAL");
     if (m_port.watchdogExpired(m_time, m_state.variables.read(watch) != 0, m_state.variables.readUser(wtime)))
         raiseFault(105);
-    std::string bytes = std::exchange(m_received, {});
-    for (const char c : bytes) handleByte(c);
+    // Taken in place, so the buffer keeps its room from step to step (nothing handleByte does receives).
+    for (const char c : m_received) handleByte(c);
+    m_received.clear();
     runServo(dt); // profile, loops, plant, faults and RECORD, every 1 ms (bds5_drive_servo.cpp)
     if (m_executor.running()) runProgram();
     m_uart.advance(dt);
@@ -145,7 +156,7 @@ void Bds5Drive::setInput(int number, bool on) {
 }
 
 bool Bds5Drive::setDedicatedInput(std::string_view name, bool on) {
-    for (const char* dedicated : {"REMOTE", "HOME", "CYCLE", "LIMIT", "MOTION", "GATE", "MANUAL"}) {
+    for (const std::string_view dedicated : kDedicatedInputs) {
         if (name != dedicated) continue;
         m_state.variables.set(name, on ? 1 : 0);
         return true;
@@ -201,7 +212,7 @@ void Bds5Drive::handleByte(char c) {
     // Run mode has no prompt: the drive takes no input but its attention characters, unless an INPUT
     // waits for an answer (L1254).
     if (m_mode == Bds5DriveMode::Running && !m_state.pendingInput) return;
-    const bool echo = switchOn("ECHO", true);
+    const bool echo = switchOn(Switch::Echo, true);
     switch (c) {
     case '\r':
         if (echo) transmit(kCrLf);
@@ -230,7 +241,7 @@ void Bds5Drive::handleByte(char c) {
 // Esc (§2.5): interactive — like CR; run — enter monitor mode; monitor — back to run; load — end of load.
 void Bds5Drive::handleEscape() {
     m_line.clear();
-    const bool messages = switchOn("MSG", true);
+    const bool messages = switchOn(Switch::Msg, true);
     switch (m_mode) {
     case Bds5DriveMode::Interactive:
         // Esc stops a <BDS or DUMP listing still on its way out (L5350); chosen: the rest is dropped.
@@ -245,7 +256,7 @@ void Bds5Drive::handleEscape() {
         m_stepGranted = true; // the line shown runs when the program goes on
         [[fallthrough]];
     case Bds5DriveMode::Running:
-        if (switchOn("TRC", false)) m_state.variables.set("TRC", 0); // Esc in trace: monitor, TRC off
+        if (switchOn(Switch::Trc, false)) m_state.variables.set("TRC", 0); // Esc in trace: monitor, TRC off
         transmit(messages ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "\r\n"); // L9757-9776
         m_mode = Bds5DriveMode::Monitor;
         sendPrompt();
@@ -382,9 +393,13 @@ void Bds5Drive::editorReply(const Bds5ResidentEditor::Reply& reply) {
 
 void Bds5Drive::sendError(const Bds5Error& error, std::string_view preamble) {
     transmit(preamble);
-    std::string text = formatError(error);
-    if (switchOn("DEP", false) && text.size() > 40) text.resize(40); // the DEP-01's 40 columns (L6102-6108)
-    transmit(std::string(1, kBell) + text + std::string(kCrLf));
+    std::string& line = m_errorLine; // reused: a flood of bad commands is a flood of error lines
+    line.assign(1, kBell);
+    appendError(line, error);
+    if (switchOn(Switch::Dep, false) && line.size() > 1 + 40)
+        line.resize(1 + 40); // the bell and the DEP-01's 40 columns (L6102-6108)
+    line += kCrLf;
+    transmit(line);
 }
 
 void Bds5Drive::sendHeldErrors(std::string_view preamble) {
@@ -402,7 +417,7 @@ void Bds5Drive::sendPrompt() {
                                : m_mode == Bds5DriveMode::ProgramLoad ? std::string(kLoadPrompt)
                                : m_mode == Bds5DriveMode::SingleStep  ? currentStepPrompt()
                                                                       : std::string(kInteractivePrompt);
-    if (switchOn("PROMPT", true)) transmit(m_port.prompt(prompt)); // PROMPT OFF: none (L1550, L5320-5326)
+    if (switchOn(Switch::Prompt, true)) transmit(m_port.prompt(prompt)); // PROMPT OFF: none (L1550, L5320-5326)
     m_promptPending = true;
 }
 
@@ -421,25 +436,24 @@ bool Bds5Drive::chooseBaudRate() {
 
 // ADDR 48-57 ('0'-'9') or 65-90 ('A'-'Z') is this axis' multidrop ID; 0 is single-drop (L5416-5424).
 std::optional<char> Bds5Drive::addressId() const {
-    const std::int32_t addr = m_state.variables.read("ADDR").value_or(0);
+    static const auto ref = *catalog::bds5::findVariable("ADDR"); // read for every prompt
+    const std::int32_t addr = m_state.variables.readUser(ref);
     if ((addr >= '0' && addr <= '9') || (addr >= 'A' && addr <= 'Z')) return char(addr);
     return std::nullopt;
 }
 
 // The switches read for every typed byte and line are looked up in the catalog once (a lookup by name
-// per byte was a tenth of the input fuzzer's time).
-SERVODESK_NO_COVERAGE bool Bds5Drive::switchOn(std::string_view name, bool fallback) const {
-    static const auto known = [] {
-        std::array<std::pair<std::string_view, catalog::bds5::VariableRef>, 9> refs{};
-        std::size_t i = 0;
+// per byte was a tenth of the input fuzzer's time, and finding the cached one by name another 4 %).
+SERVODESK_NO_COVERAGE bool Bds5Drive::switchOn(Switch which, bool fallback) const {
+    static const auto refs = [] {
+        std::array<catalog::bds5::VariableRef, 9> r{};
+        std::size_t i = 0; // in the order of enum class Switch
         for (const std::string_view n : {"ECHO", "MSG", "PROMPT", "TRC", "SS", "DEP", "MOTION", "ABAUD", "MONITOR"})
-            refs[i++] = {n, catalog::bds5::findVariable(n).value_or(catalog::bds5::VariableRef{})};
-        return refs;
+            r[i++] = catalog::bds5::findVariable(n).value_or(catalog::bds5::VariableRef{});
+        return r;
     }();
-    for (const auto& [known_name, ref] : known)
-        if (known_name == name) return ref.info ? m_state.variables.read(ref) != 0 : fallback;
-    const auto v = m_state.variables.read(name);
-    return v ? *v != 0 : fallback;
+    const catalog::bds5::VariableRef& ref = refs[std::size_t(which)];
+    return ref.info ? m_state.variables.read(ref) != 0 : fallback;
 }
 
 } // namespace drive_core::bds5

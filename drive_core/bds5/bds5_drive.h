@@ -86,7 +86,7 @@ private:
     void interactiveLine(const std::string& line);
     void monitorLine(const std::string& line);
     void inputLine(const std::string& line);
-    bool beforeLine(TaskLevel level, int line, std::string& out);
+    Bds5Executor::LineGate beforeLine(TaskLevel level, int line, std::string& out);
     std::string currentStepPrompt() const;
     void loadLine(std::string line);
     void editorReply(const Bds5ResidentEditor::Reply& reply);
@@ -98,7 +98,9 @@ private:
     void sendHeldErrors(std::string_view preamble);
     void sendPrompt();
     void transmit(std::string_view bytes);
-    bool switchOn(std::string_view name, bool fallback) const;
+    // The switches the line discipline reads for every byte and line (the catalog's ECHO, MSG, ...).
+    enum class Switch { Echo, Msg, Prompt, Trc, Ss, Dep, Motion, Abaud, Monitor };
+    bool switchOn(Switch which, bool fallback) const;
     void establishCommunications();
     std::optional<char> addressId() const;
     void tickTimers(Microseconds dt);
@@ -112,7 +114,8 @@ private:
     std::string m_received; // UART receive buffer, not yet processed
     Bds5Uart m_uart;
     Bds5Port m_port;
-    std::string m_line; // the instruction being typed
+    std::string m_line;      // the instruction being typed
+    std::string m_errorLine; // sendError's buffer, kept between lines
     std::vector<Bds5Error> m_heldErrors;
     bool m_promptPending = false;
     bool m_breakPending = false; // the program stopped while the monitor prompt was up

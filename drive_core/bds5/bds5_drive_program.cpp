@@ -82,9 +82,9 @@ void Bds5Drive::runProgram(int label) {
         }
     }
     m_executor.start(line, m_time);
-    m_mode = Bds5DriveMode::Running;  // no prompt while the program runs
-    if (switchOn("MONITOR", false)) { // v3 MONITOR 1: monitor mode whenever a program starts (L9302)
-        transmit(switchOn("MSG", true) ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "");
+    m_mode = Bds5DriveMode::Running;        // no prompt while the program runs
+    if (switchOn(Switch::Monitor, false)) { // v3 MONITOR 1: monitor mode whenever a program starts (L9302)
+        transmit(switchOn(Switch::Msg, true) ? "\r\n\nENTER MONITOR MODE. PUSH ESCAPE TO EXIT\r\n" : "");
         m_mode = Bds5DriveMode::Monitor;
         sendPrompt();
     }
@@ -112,21 +112,31 @@ void Bds5Drive::runProgram() {
     }
 }
 
-// Before each program line: the trace line, or single-step's stop before it (L5637-5712).
-bool Bds5Drive::beforeLine(TaskLevel level, int line, std::string& out) {
+// Before each program line: the trace line, or single-step's stop before it (L5637-5712). A trace line
+// is output like a print: it waits until the previous output has left (L4637), so the trace goes at the
+// line's pace and the transmitter never holds more than a line (DECISIONS.md 17).
+Bds5Executor::LineGate Bds5Drive::beforeLine(TaskLevel level, int line, std::string& out) {
+    using Gate = Bds5Executor::LineGate;
+    const bool shown = m_mode == Bds5DriveMode::Running;        // monitor mode: no display (chosen)
+    const bool stepping = shown && switchOn(Switch::Ss, false); // with TRC also on, single-step wins (L1320)
+    const bool tracing = shown && !stepping && switchOn(Switch::Trc, false);
+    if (tracing && m_state.serialBusy) return Gate::WaitLine;
     if (m_state.traceRecording) { // v3 real-time trace: the newest 100 lines (buffer size chosen)
         m_state.traceBuffer.push_back({line, tracePrefix(level), m_state.program.line(line)});
         if (m_state.traceBuffer.size() > 100) m_state.traceBuffer.pop_front();
     }
-    if (m_mode != Bds5DriveMode::Running) return true; // monitor mode: no display (chosen)
-    if (switchOn("SS", false)) {                       // with TRC also on, single-step wins (L1320)
-        if (std::exchange(m_stepGranted, false)) return true;
+    if (stepping) {
+        if (std::exchange(m_stepGranted, false)) return Gate::Run;
         out += m_state.program.line(line) + "\r\n";
-        return false;
+        return Gate::Pause;
     }
+    if (!shown) return Gate::Run;
     m_stepGranted = false;
-    if (switchOn("TRC", false)) out += tracePrefix(level) + m_state.program.line(line) + "\r\n";
-    return true;
+    if (tracing) {
+        out += tracePrefix(level) + m_state.program.line(line) + "\r\n";
+        m_state.serialBusy = true;
+    }
+    return Gate::Run;
 }
 
 std::string Bds5Drive::currentStepPrompt() const {
@@ -157,7 +167,7 @@ void Bds5Drive::monitorLine(const std::string& line) {
     if (outcome.flow == Flow::Break || outcome.flow == Flow::Stop || outcome.flow == Flow::Kill) {
         m_executor.stop();
         m_mode = Bds5DriveMode::Interactive;
-    } else if (stepping && !switchOn("SS", false)) { // SS OFF typed at the step prompt: run on
+    } else if (stepping && !switchOn(Switch::Ss, false)) { // SS OFF typed at the step prompt: run on
         m_stepGranted = true;
         m_mode = Bds5DriveMode::Running;
         return m_executor.resume(m_time);

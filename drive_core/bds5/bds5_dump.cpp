@@ -3,6 +3,9 @@
 
 #include "drive_core/catalog/bds5_catalog.h"
 
+#include <string_view>
+#include <unordered_set>
+
 namespace drive_core::bds5 {
 
 namespace cat = catalog::bds5;
@@ -24,16 +27,27 @@ void dumpVariable(const Bds5State& state, const cat::VariableInfo& v, std::strin
         const std::string name = std::string(v.name) + (i ? std::to_string(i) : std::string());
         const auto value = state.variables.read(name);
         if (!value) continue; // X251-X750 while EXTDX is off
-        out += (refusedOnUpload(v) ? ";" : "") + name + " " + std::to_string(*value) + "\r\n";
+        if (refusedOnUpload(v)) out += ';';
+        out += name;
+        out += ' ';
+        out += std::to_string(*value);
+        out += "\r\n";
     }
 }
 
 // A variable whose value bounds another's writes (AMAX for ACC and DEC, Table E.1), or decides which of
-// another's indices exist (EXTDX for X251-X750, v3 L9309).
+// another's indices exist (EXTDX for X251-X750, v3 L9309). Collected once: asked of every variable in
+// every pass, a search of the catalog each time made DUMP quadratic in its size.
 bool boundsOthers(const cat::VariableInfo& v) {
-    for (const cat::VariableInfo& other : cat::variables())
-        if (other.maximumVariable == v.name || other.extendedBy == v.name) return true;
-    return false;
+    static const std::unordered_set<std::string_view> kBounds = [] {
+        std::unordered_set<std::string_view> names;
+        for (const cat::VariableInfo& other : cat::variables()) {
+            if (!other.maximumVariable.empty()) names.insert(other.maximumVariable);
+            if (!other.extendedBy.empty()) names.insert(other.extendedBy);
+        }
+        return names;
+    }();
+    return kBounds.contains(v.name);
 }
 
 } // namespace

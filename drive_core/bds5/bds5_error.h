@@ -15,5 +15,7 @@ struct Bds5Error {
 // "ERR 83 '2'" padded so the catalog message starts at column 40 (L6036-6100, L9805).
 // Asynchronous faults with no entry print "ERR 17 FEEDBACK LOSS".
 std::string formatError(const Bds5Error& error);
+// The same bytes appended to out.
+void appendError(std::string& out, const Bds5Error& error);
 
 } // namespace drive_core::bds5

@@ -173,6 +173,7 @@ void Bds5Executor::advanceRegulatedDwells() {
 bool Bds5Executor::idle(const Task& t) const {
     if (!t.active) return true;
     if (t.waitPrinter && printerBlocked()) return true;
+    if (t.waitLine && m_state.serialBusy) return true;
     if (t.waitInput && m_state.pendingInput) return true;
     if (t.waitMotion && m_state.motion.bufferFull()) return true;
     if (t.waitSegment && !m_state.motion.waitDone(*t.waitSegment)) return true;
@@ -278,10 +279,10 @@ ProgramStop Bds5Executor::executeLine(TaskLevel level, std::string& out, std::op
     t.waitMotion = false;
     t.waitSegment.reset();
     t.regulatedLeft_ms.reset();
-    if (m_hook && !m_hook(level, line, out)) {
-        m_paused = true; // single-step: this line waits for the operator's Enter
-        return ProgramStop::Running;
-    }
+    const LineGate gate = m_hook ? m_hook(level, line, out) : LineGate::Run;
+    t.waitLine = gate == LineGate::WaitLine;      // its trace line waits for the previous output to leave
+    if (gate == LineGate::Pause) m_paused = true; // single-step: this line waits for the operator's Enter
+    if (gate != LineGate::Run) return ProgramStop::Running;
     if (printsText(lexed)) m_state.serialBusy = true;
     if (m_errorHandling && !lexed.entries.empty() && lexed.entries.front().text == "EN")
         return fail(Bds5Error{55, "EN", line}, error); // NOT FROM RECOVERY (L7301)

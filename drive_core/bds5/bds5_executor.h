@@ -45,9 +45,14 @@ public:
     // The level whose line runs next (for task prompts in single-step and trace, Table 5.1).
     std::optional<TaskLevel> currentTask() const { return m_current; }
 
+    // What the line hook lets the line about to run do.
+    enum class LineGate {
+        Run,      // the line runs (its trace line, if any, is already in out)
+        Pause,    // single-step: the program waits before this line until resume()
+        WaitLine, // trace: the line idles until the serial line is free, then asks again (L4637)
+    };
     // Called before each line runs, with the output buffer (for trace lines in order with prints).
-    // Returning false pauses the program before that line (single-step) until resume().
-    using LineHook = std::function<bool(TaskLevel level, int line, std::string& out)>;
+    using LineHook = std::function<LineGate(TaskLevel level, int line, std::string& out)>;
     void setLineHook(LineHook hook) { m_hook = std::move(hook); }
     bool paused() const { return m_paused; }
     // Continues after a pause; the processor does not catch up the time it spent paused.
@@ -74,6 +79,7 @@ private:
         std::optional<std::string> hold;        // H: idle until this switch ...
         bool holdOn = true;                     // ... is in this state
         bool waitPrinter = false;               // a print waits for the serial port (pre-execution idle)
+        bool waitLine = false;                  // a traced line waits for the serial line (not for INPUT)
         bool waitInput = false;                 // INPUT: idle until the operator answers
         bool waitMotion = false;                // a move waits for room in the motion buffer
         std::optional<int> waitSegment;         // W n

@@ -124,6 +124,7 @@ private:
     std::string statusWord() const;
     std::optional<Bds5Error> assign(std::span<const Entry> entries);
     std::optional<Bds5Error> errCommand(std::span<const Entry> entries, std::string& out);
+    Outcome dump(std::span<const Entry> entries, std::string& out);
     // cond := expr ('GT'|'GE'|'LT'|'LE'|'EQ'|'NE') expr — three entries starting at entries[0].
     std::optional<bool> condition(std::span<const Entry> entries, std::optional<Bds5Error>& error) const;
     std::optional<std::int32_t> readValue(std::string_view name) const;

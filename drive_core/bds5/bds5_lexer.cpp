@@ -24,6 +24,9 @@ std::string upper(std::string_view s) {
 std::variant<LexedLine, Bds5Error> lexLine(std::string_view line) {
     LexedLine out;
     const int quotes = int(std::count(line.begin(), line.end(), '"'));
+    // Room for a word and three parameters in one allocation (every typed line is lexed, issue 20).
+    if (const std::size_t first = line.find_first_not_of(" \t"); first != std::string_view::npos && line[first] != ';')
+        out.entries.reserve(4);
     std::size_t i = 0;
     while (i < line.size()) {
         if (isBlank(line[i])) {

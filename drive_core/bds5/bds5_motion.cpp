@@ -21,14 +21,16 @@ double basic(const Bds5VariableStore& vars, const char* name) {
     return ref ? double(vars.read(*ref)) : 0.0;
 }
 
-// The variables step() reads every millisecond, resolved once.
+// The variables step() reads and writes every millisecond, resolved once. step() and writeVariables() are
+// part of the servo tick, which the fuzz build leaves without coverage callbacks (tests/fuzz).
 struct StepRefs {
-    cat::VariableRef gate, gatemode, plim, pfb, pmax, pmin, pcam;
+    cat::VariableRef gate, gatemode, plim, pfb, pmax, pmin, pcam, pcmd, vcmd, seg, pfnl, cam;
 };
-const StepRefs& stepRefs() {
+SERVODESK_NO_COVERAGE const StepRefs& stepRefs() {
     static const StepRefs r{*cat::findVariable("GATE"), *cat::findVariable("GATEMODE"), *cat::findVariable("PLIM"),
                             *cat::findVariable("PFB"),  *cat::findVariable("PMAX"),     *cat::findVariable("PMIN"),
-                            *cat::findVariable("PCAM")};
+                            *cat::findVariable("PCAM"), *cat::findVariable("PCMD"),     *cat::findVariable("VCMD"),
+                            *cat::findVariable("SEG"),  *cat::findVariable("PFNL"),     *cat::findVariable("CAM")};
     return r;
 }
 
@@ -211,7 +213,7 @@ void Bds5Motion::clampStop() {
     if (m_profile.moving()) m_profile.start({}, m_profile.position());
 }
 
-int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
+SERVODESK_NO_COVERAGE int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
     // GATEMODE (L5949-5971): commanded motion waits for the GATE input to go high, then GATEMODE turns off.
     // Turning GATEMODE off first makes the drive forget the motion.
     const StepRefs& r = stepRefs();
@@ -266,22 +268,18 @@ int Bds5Motion::step(Microseconds dt, Bds5VariableStore& vars) {
     return 0;
 }
 
-void Bds5Motion::writeVariables(Bds5VariableStore& vars) const {
+SERVODESK_NO_COVERAGE void Bds5Motion::writeVariables(Bds5VariableStore& vars) const {
     const auto position = std::int32_t(std::llround(commandPosition_counts()));
     const auto velocity = std::int32_t(std::llround(commandVelocity_cps() * kBasicPerCountPerSecond));
-    static const auto pcmd = cat::findVariable("PCMD");
-    static const auto vcmd = cat::findVariable("VCMD");
-    static const auto seg = cat::findVariable("SEG");
-    static const auto pfnl = cat::findVariable("PFNL");
-    static const auto cam = cat::findVariable("CAM");
-    vars.set(*cam, m_cam.on() ? 1 : 0);
-    vars.set(*pcmd, m_cam.on() ? std::int32_t(m_cam.pcmd_counts()) : position);
-    vars.set(*vcmd, velocity);
-    vars.set(*seg, m_profile.segment());
-    vars.set(*pfnl, std::int32_t(std::llround(m_profile.finalPosition() + double(m_gearbox.offset_counts()))));
+    const StepRefs& r = stepRefs();
+    vars.set(r.cam, m_cam.on() ? 1 : 0);
+    vars.set(r.pcmd, m_cam.on() ? std::int32_t(m_cam.pcmd_counts()) : position);
+    vars.set(r.vcmd, velocity);
+    vars.set(r.seg, m_profile.segment());
+    vars.set(r.pfnl, std::int32_t(std::llround(m_profile.finalPosition() + double(m_gearbox.offset_counts()))));
 }
 
-void Bds5Motion::followFeedback(double pfb_counts) {
+SERVODESK_NO_COVERAGE void Bds5Motion::followFeedback(double pfb_counts) { // every period while inactive
     m_gearbox.stopRamp(); // inactive: RAMP's velocity command starts from rest when the drive is enabled
     if (!m_profile.moving()) m_profile.setPosition(toProfile(pfb_counts));
 }

@@ -45,7 +45,8 @@ int Bds5Recorder::start(int intervals, int periodMs, const std::vector<std::stri
     return 0;
 }
 
-void Bds5Recorder::step(Microseconds dt, const Bds5VariableStore& vars) {
+// Every servo period: no fuzzing coverage, like the rest of the tick (tests/fuzz).
+SERVODESK_NO_COVERAGE void Bds5Recorder::step(Microseconds dt, const Bds5VariableStore& vars) {
     if (!recording()) return;
     m_sinceSample += dt;
     if (m_sinceSample < std::chrono::milliseconds(m_periodMs)) return;

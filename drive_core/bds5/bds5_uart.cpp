@@ -28,14 +28,19 @@ void Bds5Uart::write(std::string_view bytes) {
         if (!m_muted && !m_writeMuted) m_sent.append(bytes);
         return;
     }
+    if (m_writeMuted || !m_silent.empty()) {
+        m_silent.resize(m_fifo.size(), '0'); // the first silent byte: those queued before it were not
+        m_silent.append(bytes.size(), m_writeMuted ? '1' : '0');
+    }
     m_fifo.append(bytes);
-    m_silent.append(bytes.size(), m_writeMuted ? '1' : '0');
 }
 
 void Bds5Uart::advance(Microseconds dt) {
     m_credit += double(dt.count()) * m_baud / 10.0 / 1e6;
     const std::size_t n = std::min(m_fifo.size() - m_head, std::size_t(m_credit));
-    if (!m_muted)
+    if (!m_muted && m_silent.empty())
+        m_sent.append(m_fifo, m_head, n);
+    else if (!m_muted)
         for (std::size_t i = m_head; i < m_head + n; ++i)
             if (m_silent[i] == '0') m_sent.push_back(m_fifo[i]);
     m_head += n;
@@ -47,7 +52,7 @@ void Bds5Uart::advance(Microseconds dt) {
         m_credit = std::min(m_credit, 1.0);
     } else if (m_head > 4096) {
         m_fifo.erase(0, m_head);
-        m_silent.erase(0, m_head);
+        if (!m_silent.empty()) m_silent.erase(0, m_head);
         m_head = 0;
     }
 }

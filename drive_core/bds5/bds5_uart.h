@@ -37,8 +37,9 @@ public:
     int baud() const { return m_baud; }
 
 private:
-    std::string m_fifo;   // written, from m_head on not yet sent
-    std::string m_silent; // per byte of m_fifo: '1' if written muted from now on (setMutedFromNow)
+    std::string m_fifo; // written, from m_head on not yet sent
+    // Per byte of m_fifo: '1' if written muted from now on (setMutedFromNow); empty while none queued is.
+    std::string m_silent;
     std::size_t m_head = 0;
     std::string m_sent;
     double m_credit = 0; // characters the line may carry now

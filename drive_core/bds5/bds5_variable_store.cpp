@@ -3,38 +3,56 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace drive_core::bds5 {
 
 namespace cat = catalog::bds5;
 
-Bds5VariableStore::Bds5VariableStore() {
-    const auto vars = cat::variables();
-    m_base = vars.data();
-    m_inWord = cat::findVariable("IN")->info;
-    m_outWord = cat::findVariable("OUT")->info;
-    std::size_t next = 0;
-    for (const cat::VariableInfo& v : vars) {
-        m_firstSlot.push_back(next);
-        next += slotCount(v);
-    }
-    m_values.assign(next, 0);
-    for (std::size_t i = 0; i < vars.size(); ++i)
-        for (std::size_t k = 0; k < slotCount(vars[i]); ++k)
-            m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
-}
-
+namespace {
 // A family keeps slots for its extended indices too (X251-X750): they hold 0 while the switch is off.
-std::size_t Bds5VariableStore::slotCount(const cat::VariableInfo& v) {
+std::size_t slotCount(const cat::VariableInfo& v) {
     return v.firstIndex == 0 ? 1 : std::size_t(cat::highestIndex(v) - v.firstIndex + 1);
 }
+
+// Where each catalog variable lives in the value memory, and what the memory holds when the drive is
+// built: the same for every drive, so worked out once (the input fuzzer builds a drive for every input).
+struct Layout {
+    std::vector<std::size_t> firstSlot;   // per catalog entry
+    std::vector<std::ptrdiff_t> slotBase; // per catalog entry: firstSlot less firstIndex (0 for plain variables)
+    std::vector<std::int32_t> initial;    // the catalog's power-up values, per slot
+    const cat::VariableInfo* inWord = nullptr;
+    const cat::VariableInfo* outWord = nullptr;
+};
+
+const Layout& layout() {
+    static const Layout kLayout = [] {
+        const auto vars = cat::variables();
+        Layout l;
+        l.firstSlot.reserve(vars.size());
+        for (const cat::VariableInfo& v : vars) {
+            l.firstSlot.push_back(l.initial.size());
+            l.slotBase.push_back(std::ptrdiff_t(l.initial.size()) - v.firstIndex);
+            l.initial.insert(l.initial.end(), slotCount(v), std::int32_t(v.powerUpValue));
+        }
+        l.inWord = cat::findVariable("IN")->info;
+        l.outWord = cat::findVariable("OUT")->info;
+        return l;
+    }();
+    return kLayout;
+}
+} // namespace
+
+Bds5VariableStore::Bds5VariableStore()
+    : m_base(cat::variables().data()), m_inWord(layout().inWord), m_outWord(layout().outWord),
+      m_slotBase(layout().slotBase.data()), m_values(layout().initial) {}
 
 void Bds5VariableStore::powerUp() {
     const auto vars = cat::variables();
     for (std::size_t i = 0; i < vars.size(); ++i) {
         if (vars[i].persistence != cat::Persistence::Volatile) continue;
         for (std::size_t k = 0; k < slotCount(vars[i]); ++k)
-            m_values[m_firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
+            m_values[layout().firstSlot[i] + k] = std::int32_t(vars[i].powerUpValue);
     }
 }
 

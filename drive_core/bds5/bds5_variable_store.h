@@ -61,20 +61,19 @@ public:
     void set(std::string_view upperName, std::int32_t value);
 
 private:
-    static std::size_t slotCount(const catalog::bds5::VariableInfo& v);
     // IN and OUT are the words of the I1-I16 and O1-O8 switches (I1 = bit 0): one memory, two views.
     std::optional<std::int32_t> word(const catalog::bds5::VariableRef& ref) const;
     void setBits(std::string_view stem, int count, std::int32_t word);
     void setWord(const catalog::bds5::VariableRef& ref, std::int32_t value);
+    // A plain variable's index is 0, so one table gives both: its slot, or a family's slot less its first index.
     SERVODESK_NO_COVERAGE std::size_t slot(const catalog::bds5::VariableRef& ref) const {
-        const std::size_t offset = ref.info->firstIndex == 0 ? 0 : std::size_t(ref.index - ref.info->firstIndex);
-        return m_firstSlot[std::size_t(ref.info - m_base)] + offset;
+        return std::size_t(m_slotBase[std::size_t(ref.info - m_base)] + ref.index);
     }
 
     const catalog::bds5::VariableInfo* m_base = nullptr;   // the catalog's first entry
     const catalog::bds5::VariableInfo* m_inWord = nullptr; // IN and OUT: words of bits, not slots
     const catalog::bds5::VariableInfo* m_outWord = nullptr;
-    std::vector<std::size_t> m_firstSlot; // per catalog entry, its first slot in m_values
+    const std::ptrdiff_t* m_slotBase = nullptr; // per catalog entry: slot - index (shared, see layout())
     std::vector<std::int32_t> m_values;
 };
 

@@ -9,17 +9,30 @@
 
 namespace drive_core::catalog::bds5 {
 
+// findError and findCommand run for every line a terminal or a program sends (the answer, the command's
+// legal modes), so both tables are indexed once: errors by number, commands by name. A name or number the
+// tables repeat resolves to its first entry, as a search from the front would.
 const ErrorInfo* findError(int code) {
-    const auto table = errors();
-    const auto it = std::find_if(table.begin(), table.end(), [code](const ErrorInfo& e) { return e.code == code; });
-    return it == table.end() ? nullptr : &*it;
+    static const std::vector<const ErrorInfo*> kByCode = [] {
+        std::vector<const ErrorInfo*> byCode;
+        for (const ErrorInfo& e : errors()) {
+            if (e.code < 0) continue;
+            if (std::size_t(e.code) >= byCode.size()) byCode.resize(std::size_t(e.code) + 1, nullptr);
+            if (!byCode[std::size_t(e.code)]) byCode[std::size_t(e.code)] = &e;
+        }
+        return byCode;
+    }();
+    return code >= 0 && std::size_t(code) < kByCode.size() ? kByCode[std::size_t(code)] : nullptr;
 }
 
 const CommandInfo* findCommand(std::string_view upperName) {
-    const auto table = commands();
-    const auto it =
-        std::find_if(table.begin(), table.end(), [upperName](const CommandInfo& c) { return c.name == upperName; });
-    return it == table.end() ? nullptr : &*it;
+    static const std::unordered_map<std::string_view, const CommandInfo*> kByName = [] {
+        std::unordered_map<std::string_view, const CommandInfo*> byName;
+        for (const CommandInfo& c : commands()) byName.emplace(c.name, &c);
+        return byName;
+    }();
+    const auto it = kByName.find(upperName);
+    return it == kByName.end() ? nullptr : it->second;
 }
 
 namespace {
@@ -47,7 +60,9 @@ std::optional<VariableRef> findVariable(std::string_view upperName) {
     static const VariableIndex kIndex;
     // Plain names first: "XS" is not X with index "S", and "TMR1" must not match a plain "TMR".
     if (const auto it = kIndex.plain.find(upperName); it != kIndex.plain.end()) return VariableRef{it->second, 0};
-    // Indexed families: the longest stem followed by a decimal index in range.
+    // Indexed families: the longest stem followed by a decimal index in range, so the name ends in a digit
+    // (most words typed that are not a variable do not: they are answered without trying every stem).
+    if (upperName.empty() || !std::isdigit(static_cast<unsigned char>(upperName.back()))) return std::nullopt;
     for (const VariableInfo* v : kIndex.families) {
         if (!upperName.starts_with(v->name)) continue;
         const std::string_view digits = upperName.substr(v->name.size());

@@ -26,6 +26,29 @@ def check(name, condition, detail=""):
         print(f"FAIL {name}: {detail}")
 
 
+def read(path):
+    return open(path).read() if os.path.exists(path) else ""
+
+
+def params(text):
+    """NAME -> value of a .PRM's "NAME = value" lines."""
+    return {n.strip(): v.strip() for n, v in (line.split("=", 1) for line in text.splitlines() if "=" in line)}
+
+
+def check_watch(name, r, csv, header, every_ms, for_s, last=None):
+    """watch wrote the scope's CSV: the asked columns; at most one row per --every within --for (polls go out
+    only while the time lasts, one at a time) and at least two; times from the first poll, increasing; and
+    (last) what the final row must show. No lower bound tied to the wall clock: the suite runs under load
+    (packaging/flake-hunt.sh), where a poll may wait long for its answer."""
+    rows = [line.split(",") for line in read(csv).splitlines()]
+    body = rows[1:]
+    times = [float(row[0]) for row in body]
+    check(name, r.returncode == 0 and rows and rows[0] == header and 2 <= len(body) <= int(for_s * 1000 / every_ms)
+          and all(len(row) == len(header) for row in body) and times[0] >= 0
+          and all(a < b for a, b in zip(times, times[1:])) and f"{len(body)} samples" in r.stdout
+          and (last is None or last(body[-1], body)), (r, rows[:2], rows[-2:], len(body)))
+
+
 with tempfile.TemporaryDirectory() as tmp:
     hello = os.path.join(tmp, "HELLO.BDS")
     with open(hello, "w") as f:
@@ -66,8 +89,21 @@ with tempfile.TemporaryDirectory() as tmp:
     r = cli("send", "PLIM OFF", "EN", "record", "--vars", "VCMD,PCMD", "--count", "100", "--interval", "2",
             "--then", "J 1000", "--csv", csv)
     rows = open(csv).read().splitlines() if os.path.exists(csv) else []
-    check("record", r.returncode == 0 and rows[1] == "time_s,VCMD [VEL],PCMD [POS]" and len(rows) == 102
-          and rows[-1].split(",")[1] == "1000", (r, rows[:3], rows[-2:]))
+    # The scope's own .CSV layout (scope/capture_csv.h), the one Scope > Open reads: RECORD line, titles, rows.
+    check("record", r.returncode == 0 and rows[:2] == ["RECORD,100,2,VCMD,PCMD", "Time (s),VCMD (VEL),PCMD (POS)"]
+          and len(rows) == 102 and rows[-1].split(",")[1] == "1000", (r, rows[:3], rows[-2:]))
+
+    # watch: polled, each row stamped when it was read. J 1000 jogs at 1000 (VEL); PFB counts up meanwhile.
+    watch = os.path.join(tmp, "WATCH.CSV")
+    r = cli("send", "PLIM OFF", "EN", "J 1000", "watch", "--vars", "VFB,PFB", "--every", "100", "--for", "2",
+            "--csv", watch)
+    check_watch("bds5 watch", r, watch, ["Time (s)", "VFB (VEL)", "PFB (POS)"], 100, 2,
+                lambda row, rows: row[1] == "1000" and int(row[2]) > int(rows[0][2]))
+    r = cli("watch", "--vars", "VFB,NOSUCH", "--every", "100", "--for", "1", "--csv", watch)
+    check("bds5 watch unknown", r.returncode == 2 and '"NOSUCH"' in r.stderr
+          and "VCMD, VFB, ICMD, PCMD, PFB" in r.stderr, r)
+    r = cli("watch", "--vars", "VFB,PFB,VCMD,PCMD,ICMD", "--every", "100", "--for", "1", "--csv", watch)
+    check("watch usage", r.returncode == 2 and "1 to 4" in r.stderr, r)
 
     r = cli("stop")
     check("stop", r.returncode == 0, r)
@@ -108,6 +144,47 @@ with tempfile.TemporaryDirectory() as tmp:
     r = cli("--drive", "sc750", "download", bad_bas)
     check("sc750 download compile error", r.returncode == 1 and "old program" in r.stderr, r)
 
+    # The SC750's parameter set (.PRM): its PARAMS block, read with G frames. The values a fresh drive holds are
+    # the manual's boiler-plate (L946-L973); SIX.THRESH comes back with the 7 digits PRINT shows.
+    prm = os.path.join(tmp, "SET.PRM")
+    r = cli("--drive", "sc750", "vars", "dump", prm)
+    text = read(prm)
+    values = params(text)
+    manual = {"POLECOUNT": "4", "ILC": "13", "KVP": "0.087086", "KVI": "5.000000", "ARF0": "150.000000",
+              "KPP": "15.000000", "BLKTYPE": "2", "ILMT.PLUS": "100", "DACMAP": "1", "ITF0": "0.020000",
+              "IT.THRESH": "60", "ADF0": "1000.000000"}
+    check("sc750 vars dump", r.returncode == 0 and text.startswith("' ") and "\nPARAMS START\n" in text
+          and text.endswith("\nPARAMS END\n") and all(values.get(k) == v for k, v in manual.items())
+          and abs(float(values.get("SIX.THRESH", "0")) - 430.664063) < 1e-3, (r, text))
+    # Controller Set Up's Auto values for another motor (L2509-L2512): ILC = 59, KVP = 0.062053.
+    with open(prm, "w") as f:
+        f.write(text.replace("ILC = 13", "ILC = 59").replace("KVP = 0.087086", "KVP = 0.062053"))
+    again = os.path.join(tmp, "AGAIN.PRM")
+    r = cli("--drive", "sc750", "vars", "send", prm, "vars", "dump", again)
+    after = params(read(again))
+    check("sc750 vars send", r.returncode == 0 and f"Sent {len(values)} parameter line(s)." in r.stdout
+          and after.get("ILC") == "59" and after.get("KVP") == "0.062053" and after.get("KPP") == "15.000000",
+          (r, after))
+    bad_prm = os.path.join(tmp, "BAD.PRM")
+    with open(bad_prm, "w") as f:
+        f.write("' KVP above its range, and a line that is no assignment\nPARAMS START\nKVP = 5000\nKVI = 4.5\n"
+                "KPP = fast\nPARAMS END\n")
+    r = cli("--drive", "sc750", "vars", "send", bad_prm)
+    check("sc750 vars send refused", r.returncode == 1 and r.stdout.splitlines() == [
+        f"{bad_prm}:3: !14 VALUE OUT OF RANGE FOR KVP 'KVP=5000'",
+        f"{bad_prm}:5: not an assignment (NAME = number) 'KPP = fast'"] and r.stderr == "servodesk-cli: Sent 2 "
+          "parameter line(s); the drive refused 1 of them; 1 line(s) of the file were not sent.\n", r)
+
+    # watch on the SC750: G frames. GO.VEL at RUN.SPEED 100 RPM; POSITION counts up meanwhile.
+    r = cli("--drive", "sc750", "send", "ENABLE=1", "RUN.SPEED=100", "GO.VEL", "watch", "--vars", "VELOCITY,POSITION",
+            "--every", "100", "--for", "2", "--csv", watch)
+    check_watch("sc750 watch", r, watch, ["Time (s)", "VELOCITY (RPM)", "POSITION (counts)"], 100, 2,
+                lambda row, rows: float(row[1]) == 100 and int(row[2]) > int(rows[0][2]))
+    r = cli("--drive", "sc750", "watch", "--vars", "POSITON", "--every", "100", "--for", "1", "--csv", watch)
+    check("sc750 watch unknown", r.returncode == 2 and '"POSITON"' in r.stderr and "POSITION, POS.ERROR" in r.stderr, r)
+    r = cli("--drive", "sc750", "record", "--vars", "POSITION", "--count", "10", "--interval", "1", "--csv", watch)
+    check("sc750 record is the BDS5's", r.returncode == 2 and "watch" in r.stderr, r)
+
     # The PMC-960: MPL at its prompt, a routine downloaded (verified by the communications checksum), run by
     # its label, and its refusal when the servo is not enabled (#B6).
     mpl = os.path.join(tmp, "MOVE.MPL")
@@ -135,23 +212,61 @@ with tempfile.TemporaryDirectory() as tmp:
         f.write("@T\nI4000+\n")
     r = cli("--drive", "pmc960", "download", idle, "run", "T", "--follow", "5")
     check("pmc960 run refused", r.returncode == 1 and "#B6" in r.stderr and "SM2" in r.stderr, r)
+
+    # The PMC-960's parameter table as the MPL lines that set it, SW1 ... SW0. The gains of a fresh controller are
+    # the manual's defaults (5.7 Tuning Parameters: position, velocity, tach, feedforward 16/16/160/16).
+    table = os.path.join(tmp, "TABLE.MPL")
+    r = cli("--drive", "pmc960", "vars", "dump", table)
+    lines = [line for line in read(table).splitlines() if not line.startswith("@.")]
+    check("pmc960 vars dump", r.returncode == 0 and lines[:5] == ["SW1", "TGP16", "TGV16", "TGT160", "TGF16"]
+          and lines[-1] == "SW0" and "THA4096" in lines and not any(line.startswith("THB") for line in lines),
+          (r, read(table)))
+    # The manual's TG examples (L1769-L1773): TGP17, TGV34.
+    text = read(table)
+    with open(table, "w") as f:
+        f.write(text.replace("TGP16\n", "TGP17\n").replace("TGV16\n", "TGV34\n"))
+    again = os.path.join(tmp, "AGAIN.MPL")
+    r = cli("--drive", "pmc960", "vars", "send", table, "vars", "dump", again, "send", "TGP?", "TGV?")
+    lines = read(again).splitlines()
+    check("pmc960 vars send", r.returncode == 0 and "TGP17" in lines and "TGV34" in lines and "TGT160" in lines
+          and r.stdout.endswith("P-17\nV-34\n"), (r, lines))
+    bad_table = os.path.join(tmp, "BAD.MPL")
+    with open(bad_table, "w") as f:
+        f.write("@.gains_before_write_enable\nTGP20\nSW1\nTGV300\nTGT150\nSW0\n")
+    r = cli("--drive", "pmc960", "vars", "send", bad_table)
+    check("pmc960 vars send refused", r.returncode == 1 and r.stdout.splitlines() == [
+        f"{bad_table}:2: #D3 Write protected 'TGP20'", f"{bad_table}:4: TGV must lie within 0 \u2013 255. 'TGV300'"]
+          and "refused 1" in r.stderr, r)
+
+    # watch on the PMC-960: its status polls. J10 jogs at 10 (100 Hz units); position counts up meanwhile.
+    r = cli("--drive", "pmc960", "send", "SM2", "J10", "J+", "watch", "--vars", "G,SF,V,I", "--every", "100",
+            "--for", "2", "--csv", watch)
+    check_watch("pmc960 watch", r, watch, ["Time (s)", "G (counts)", "SF (counts)", "V (V units)", "I (counts)"],
+                100, 2, lambda row, rows: row[3] == "10" and int(row[1]) > int(rows[0][1]))
     r = cli("--port", "/dev/pts/does-not-exist", "send", "P 1")
     check("no port", r.returncode == 3 and r.stderr.count("\n") == 1, r)
 
     sim = subprocess.Popen([SIM, "--drive", "bds5", "--pty"], stdout=subprocess.PIPE, text=True)
     try:
         pty = sim.stdout.readline().split()[1]
+        r = cli("--port", pty, "watch", "--vars", "VFB,PFB", "--every", "100", "--for", "2", "--csv", watch)
+        check_watch("pty watch", r, watch, ["Time (s)", "VFB (VEL)", "PFB (POS)"], 100, 2)
         r = cli("--port", pty, "send", 'P "OVER THE PTY"', "download", hello, "run", "10", "--follow", "3")
         check("pty", r.returncode == 0 and r.stdout.startswith("OVER THE PTY\n") and "HELLO WORLD" in r.stdout, r)
     finally:
         sim.terminate()
         sim.wait(5)
 
-    for family, program, run_args, expect in (("sc750", bas, ["run", "--follow", "3"], "COUNT  3"),
-                                              ("pmc960", mpl, ["run", "T", "--follow", "5"], "checksum")):
+    for family, program, run_args, expect, watched in (
+            ("sc750", bas, ["run", "--follow", "3"], "COUNT  3", ["POSITION", "VELOCITY"]),
+            ("pmc960", mpl, ["run", "T", "--follow", "5"], "checksum", ["G", "SF"])):
         sim = subprocess.Popen([SIM, "--drive", family, "--pty"], stdout=subprocess.PIPE, text=True)
         try:
             pty = sim.stdout.readline().split()[1]
+            r = cli("--drive", family, "--port", pty, "watch", "--vars", ",".join(watched), "--every", "100", "--for",
+                    "2", "--csv", watch)
+            check_watch(f"{family} pty watch", r, watch, ["Time (s)"] + [
+                f"{n} ({'RPM' if n == 'VELOCITY' else 'counts'})" for n in watched], 100, 2)
             r = cli("--drive", family, "--port", pty, "download", program, *run_args)
             check(f"{family} pty", r.returncode == 0 and expect in r.stdout, r)
         finally:

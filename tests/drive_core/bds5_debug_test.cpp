@@ -1,6 +1,8 @@
 // INPUT, single-step, trace, ERROR$ and the print variants — the manual's examples (§4.10, §5.2, §4.9).
 #include "bds5_test_drive.h"
 
+#include <algorithm>
+
 using namespace bds5_test;
 using drive_core::bds5::Bds5DriveMode;
 
@@ -98,6 +100,74 @@ TEST(Bds5Trace, BackgroundLinesCarryTheirTask) { // L5728-5758
     t.type("TRC ON\r");
     const std::string out = t.type("RUN\r", 100ms);
     EXPECT_NE(out.find("t.*.P \"UPPER TASK IDLED\"\r\nUPPER TASK IDLED\r\n"), std::string::npos) << out;
+}
+
+// Trace lines are output like prints: each waits for the line (L4637), so a background loop that
+// traces faster than 9600 baud carries cannot bury the main task's print nor outlive ^X.
+namespace {
+const std::vector<std::string> kTracedLoop = {"1$", "D 100", "P \"MAIN DONE\"", "B", "BACKGROUND$", "X1=X1+1", "END"};
+// 9600 baud carries 960 characters a second; a traced line and its print (at most 4 + 80 + 2 and 80 + 2
+// characters) are under 0.2 s of it. Without pacing the loop writes 24 characters each 4.25 ms.
+constexpr std::size_t kLineBacklog = 192;
+
+// Steps in 1 ms ticks until `needle` has been sent or `limit` has passed; returns what was sent.
+std::string runUntil(TestDrive& t, const std::string& needle, std::chrono::milliseconds limit) {
+    std::string out;
+    for (auto ms = 0ms; ms < limit && out.find(needle) == std::string::npos; ms += 1ms) {
+        t.drive.step(1ms);
+        out += t.drive.takeTransmitted();
+    }
+    return out;
+}
+} // namespace
+
+TEST(Bds5Trace, MainTaskPrintsBesideATracedBackgroundLoop) { // L4623-4640, L5728-5758
+    TestDrive t;
+    t.download(kTracedLoop);
+    t.type("TRC ON\r");
+    t.drive.receive("RUN 1\r");
+    // D 100, then the print waits at most for the trace line on the wire (about 15 ms).
+    const std::string out = runUntil(t, "\r\nMAIN DONE\r\n", 300ms);
+    const auto done = out.find("t...P \"MAIN DONE\"\r\nMAIN DONE\r\n");
+    ASSERT_NE(done, std::string::npos) << out;
+    EXPECT_NE(out.find("t...D 100\r\nt.*.X1=X1+1\r\n"), std::string::npos) << "the background runs while main dwells";
+    EXPECT_TRUE(t.wait(100ms).starts_with("t...B\r\n")) << "the main task goes on to its break";
+    EXPECT_EQ(t.drive.mode(), Bds5DriveMode::Interactive);
+}
+
+TEST(Bds5Trace, TransmitBacklogStaysWithinALinesWorth) { // L4637
+    TestDrive t;
+    t.download({"1$", "D 50", "P \"MAIN\"", "GOTO 1", "BACKGROUND$", "X1=X1+1", "END"});
+    t.type("TRC ON\r");
+    t.drive.receive("RUN 1\r");
+    std::string out;
+    std::size_t worst = 0;
+    for (auto ms = 0ms; ms < 1000ms; ms += 1ms) {
+        t.drive.step(1ms);
+        worst = std::max(worst, t.drive.transmitBacklog());
+        out += t.drive.takeTransmitted();
+    }
+    EXPECT_LE(worst, kLineBacklog);
+    EXPECT_GE(out.size(), 800u) << "the trace keeps the 9600-baud line busy";
+    EXPECT_GE(count(out, "t...P \"MAIN\"\r\nMAIN\r\n"), 5) << out;
+    EXPECT_GE(count(out, "t.*.X1=X1+1\r\n"), 5) << out;
+}
+
+TEST(Bds5Trace, CtrlXStopsTheTraceAtOnce) { // L2233-2235, L9868
+    TestDrive t;
+    t.download({"BACKGROUND$", "X1=X1+1", "END"});
+    t.type("TRC ON\r");
+    t.drive.receive("RUN\r");
+    for (auto ms = 0ms; ms < 1000ms; ms += 1ms) t.drive.step(1ms);
+    ASSERT_NE(t.drive.takeTransmitted().find("t.*.X1=X1+1\r\n"), std::string::npos) << "the loop traces";
+    const std::size_t queued = t.drive.transmitBacklog(); // what the transmitter holds at the ^X
+    t.drive.receive("\x18");
+    for (auto ms = 0ms; ms < 3000ms; ms += 1ms) t.drive.step(1ms);
+    const std::string out = t.drive.takeTransmitted();
+    EXPECT_LE(out.size(), std::min(queued, kLineBacklog) + 5) << out; // + CR LF "-->" at most
+    EXPECT_EQ(out.find("t.", std::min(queued, out.size())), std::string::npos) << "no trace after ^X: " << out;
+    EXPECT_TRUE(out.ends_with("-->")) << out;
+    EXPECT_EQ(t.drive.mode(), Bds5DriveMode::Interactive);
 }
 
 TEST(Bds5ErrorLabel, ABreakingErrorRunsErrorLabel) { // L4956-4958

@@ -29,11 +29,16 @@
 // holds must be explained by what was typed and done (see Session::finish).
 //
 // An input costs what it asks for and no more (issue 20, item 12): every millisecond of drive time is a
-// servo tick with the plant in it (~2 us under ASan) and every flooded line a command (~10 us), so the
-// harness adds no time of its own and an input gets at most 1 s of drive time and 4 KB of flood in all
-// (later time and flood operations do nothing); the 10 MB sessions without a CR are replayed from
-// corpus/bds5-long. It reads the transmitter's backlog instead of letting it drain, and a program that
-// outruns the line shows itself in that backlog within the time the input gives it.
+// servo tick with the plant in it and every flooded line a command answered, so the harness adds no time
+// of its own and an input gets at most 250 ms of drive time and 1 KB of flood in all (later time and flood
+// operations do nothing). 1 KB reaches every bound of the drive's input handling: 80 characters a line
+// (the 81st rings), 15 entries an instruction, 20 entries of ERR HIST, 30 macro segments, and 128 and
+// more repeats of a short line (the coverage counters' top bucket). Beyond any flood the harness allows,
+// 4 KB included: 16,000 characters of program memory (the input and its floods stay under 8 KB) and the
+// transmitter's 4 KB compaction (250 ms carry at most 480 characters at 19200 baud); the 10 MB sessions
+// without a CR are replayed from corpus/bds5-long. The harness reads the transmitter's backlog instead
+// of letting it drain, and a program that outruns the line shows itself in that backlog within the time
+// the input gives it.
 
 namespace {
 
@@ -41,8 +46,8 @@ using drive_core::Microseconds;
 using drive_core::bds5::Bds5Drive;
 using namespace std::chrono_literals;
 
-constexpr std::size_t kMaxFlood = 4096;     // flooded bytes an input, in all
-constexpr Microseconds kMaxDriveTime = 250ms;// simulated time an input, in all
+constexpr std::size_t kMaxFlood = 1024;       // flooded bytes an input, in all
+constexpr Microseconds kMaxDriveTime = 250ms; // simulated time an input, in all
 // BDS5_FUZZ_TRACE=1 copies what the drive sends to stderr, to read a reproducer's session.
 const bool kTrace = std::getenv("BDS5_FUZZ_TRACE") != nullptr;
 
@@ -58,6 +63,7 @@ public:
     void receive(std::string_view bytes) {
         m_drive.receive(bytes);
         m_received += bytes.size();
+        m_typed = true; // the next step takes them
     }
 
     // One step() call: what leaves the drive in dt is what the line carries at BAUD, 8N1 (ten bits a
@@ -66,11 +72,18 @@ public:
         dt = std::min(dt, m_timeLeft);
         if (dt <= Microseconds{0}) return;
         m_timeLeft -= dt;
+        const std::size_t before = m_drive.transmitBacklog();
         m_drive.step(dt);
         const std::string out = m_drive.takeTransmitted();
         const double carried = double(dt.count()) * m_drive.baudRate() / 10.0 / 1e6;
         if (double(out.size()) > carried + 2.0)
             fail("output faster than the baud rate", (long long)out.size(), dt.count());
+        // What a step that takes typed bytes writes answers them (muted bytes leave unseen: count what
+        // the line could carry). A listing is the size of what it lists, not of the line that asked.
+        if (std::exchange(m_typed, false)) {
+            const std::size_t written = m_drive.transmitBacklog() + std::size_t(carried) + 2;
+            if (written > before) m_answered += written - before;
+        }
         m_sent += out.size();
         if (kTrace) std::fwrite(out.data(), 1, out.size(), stderr);
         checkState();
@@ -93,15 +106,18 @@ public:
     void countOperation() { ++m_operations; }
 
     // Types ^X and lets the drive take it. Everything still queued must be explained by what was typed
-    // and done (echo, answers: ERR HIST is the wordiest, ~60 characters a typed byte) and by the program
-    // (a listing, the editor's P BEG END: a few characters a stored one); a backlog beyond that grew by
-    // itself: a program's prints wait for the line (L4637), so a running one cannot queue more.
+    // and done: the answers the typed lines got (DUMP, PLAY, TPLAY and <BDS are kilobytes for five typed
+    // bytes; three DUMPs outgrew a fixed ~128 characters a typed byte), what operations made the drive
+    // say, and the program (the editor's P BEG END: a few characters a stored line). A backlog beyond
+    // that grew by itself: a program's prints wait for the line (L4637), so a running one cannot queue
+    // more. (A program's output in the step that takes typed bytes counts as their answer; an input that
+    // gives the program time after typing shows it.)
     void finish() {
         receive("\x18");
         m_timeLeft = 1ms; // the ^X is taken whatever the input spent
         step(1ms);
         const std::size_t bound =
-            128 * (m_received + m_operations) + 16 * m_drive.state().program.sizeChars() + 8192;
+            m_answered + 128 * (m_received + m_operations) + 16 * m_drive.state().program.sizeChars() + 8192;
         if (m_drive.transmitBacklog() > bound)
             fail("transmit backlog grows without bound", (long long)m_drive.transmitBacklog(), (long long)bound);
     }
@@ -113,6 +129,8 @@ private:
     std::size_t m_received = 0; // bytes given to receive()
     std::size_t m_sent = 0;     // bytes taken from takeTransmitted()
     std::size_t m_operations = 0;
+    std::size_t m_answered = 0; // characters written by the steps that took typed bytes
+    bool m_typed = false;       // bytes received and not yet taken by a step
     Microseconds m_timeLeft = kMaxDriveTime;
 };
 
@@ -120,7 +138,9 @@ void run(const std::uint8_t* data, std::size_t size) {
     Session s;
     std::string pending; // plain bytes, handed to the drive before the next operation
     const auto flush = [&] {
-        if (!pending.empty()) s.receive(std::exchange(pending, {}));
+        if (pending.empty()) return;
+        s.receive(pending);
+        pending.clear();
     };
     std::size_t floodLeft = kMaxFlood;
     std::size_t i = 0;

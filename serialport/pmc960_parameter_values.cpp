@@ -3,14 +3,15 @@
 
 #include <QCoreApplication>
 #include <QRegularExpression>
+#include <QStringList>
 
-namespace app {
+namespace serialport {
 
 namespace {
 using drive_core::catalog::pmc960::NumberBase;
 
 QString tr(const char* text) {
-    return QCoreApplication::translate("app::Pmc960ParameterValues", text);
+    return QCoreApplication::translate("serialport::Pmc960ParameterValues", text);
 }
 
 constexpr std::int64_t kFixedScale = 10000; // FixedPoint values are stored x 10000 ("5:7777" = 57777)
@@ -60,6 +61,13 @@ QString valueFromDisplay(const Pmc960Parameter& p, const QString& reply) {
         text.at(1) == QLatin1Char('-'))
         return text.mid(2);
     return text;
+}
+
+bool isReadOnlyFromHost(const Pmc960Parameter& p) {
+    static const QStringList kReadOnly{QStringLiteral("THB"), QStringLiteral("THC"), QStringLiteral("THI"),
+                                       QStringLiteral("G"),   QStringLiteral("J"),   QStringLiteral("D"),
+                                       QStringLiteral("SW")};
+    return kReadOnly.contains(parameterName(p)) || displayCommand(p, '?').isEmpty();
 }
 
 QString rangeText(const Pmc960Parameter& p) {
@@ -116,4 +124,4 @@ ParameterWrite parameterWrite(const Pmc960Parameter& p, const QString& input) {
     return w;
 }
 
-} // namespace app
+} // namespace serialport
