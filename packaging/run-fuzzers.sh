@@ -50,7 +50,7 @@ for t in "${targets[@]}"; do
     read -r wall user sys <"$timing" || true
     rates=$(awk -v n="$runs" -v w="${wall:-0}" -v u="${user:-0}" -v s="${sys:-0}" 'BEGIN {
         c = u + s
-        printf "%.1f s wall, %.0f exec/s; %.1f s CPU, %.0f exec per CPU-second", w, w > 0 ? n / w : 0, c, c > 0 ? n / c : 0
+        printf "%.1f s wall, %.0f exec/s; %.1f s CPU, %.0f exec per CPU-second", w, (w > 0 ? n / w : 0), c, (c > 0 ? n / c : 0)
     }')
     if [ "$found" = 0 ]; then
         echo "fuzz: $name: $runs executions in $seconds s ($rates), no findings"
