@@ -41,6 +41,8 @@ int usage(int code) {
                  "                    input N on|off   enable on|off   motion on|off   home on|off\n"
                  "                    home-at REV   limits on|off on|off (positive, negative)\n"
                  "                    load-torque NM   load-inertia KGM2   master-hz HZ   motor NAME\n"
+                 "                    load-coupling NM_PER_RAD NMS_PER_RAD (a compliant coupling: a two-mass\n"
+                 "                    load with a resonance; bds5 only)   load-coupling off (rigid again)\n"
                  "                    master-wave sine|square|triangle AMP_HZ FREQ_HZ   master-wave off\n"
                  "                    analog-in V (the SC750's analog input, volts)\n"
                  "                    feedback on|off   power-cycle   status\n"

@@ -68,7 +68,10 @@ std::string statusLine(const SimulatorStatus& s) {
            " active=" + (s.active ? "1" : "0") + " fault=" + (s.fault ? "1" : "0") +
            " position_rev=" + format(s.position_rev) + " velocity_rpm=" + format(s.velocity_rpm) +
            " current_a=" + format(s.current_a) + " load_torque_nm=" + format(s.loadTorque_Nm) +
-           " load_inertia_kgm2=" + format(s.loadInertia_kgm2) + " master_hz=" + format(s.masterFrequency_Hz) +
+           " load_inertia_kgm2=" + format(s.loadInertia_kgm2) +
+           " coupling_nm_per_rad=" + format(s.couplingStiffness_NmPerRad) +
+           " coupling_nms_per_rad=" + format(s.couplingDamping_NmPerRadPerS) +
+           " resonance_hz=" + format(s.resonance_Hz) + " master_hz=" + format(s.masterFrequency_Hz) +
            " motor=" + s.motorName + " feedback=" + (s.feedbackConnected ? "1" : "0") +
            " relay=" + (s.relayClosed ? "1" : "0") + " brake_released=" + (s.brakeReleased ? "1" : "0") +
            " master_wave=" + waveText(s.masterWave) + " analog_in_v=" + format(s.analogInput_V) +
@@ -125,6 +128,15 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
         if (verb == "analog-in") controls.setAnalogInput_V(*value);
         return "OK";
     }
+    // load-coupling NM_PER_RAD NMS_PER_RAD | load-coupling off (rigid)
+    if (verb == "load-coupling" && (arity(1) || arity(2))) {
+        if (arity(1) && w[1] != "off") return "ERROR expected load-coupling off or a stiffness and a damping";
+        const auto stiffness = arity(1) ? std::optional<double>(0) : number(w[1]);
+        const auto damping = arity(1) ? std::optional<double>(0) : number(w[2]);
+        if (!stiffness || !damping) return "ERROR expected a number";
+        if (*stiffness < 0 || *damping < 0) return "ERROR stiffness and damping must not be negative";
+        return controls.setLoadCoupling(*stiffness, *damping) ? "OK" : "ERROR this drive has no load model";
+    }
     // master-wave sine|square|triangle AMP_HZ FREQ_HZ | master-wave off
     if (verb == "master-wave" && (arity(1) || arity(3))) {
         MasterWave wave;
@@ -144,9 +156,9 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
         return controls.setMasterWave(wave) ? "OK" : "ERROR this drive has no master waveform";
     }
     if (verb == "motor" && arity(1)) return controls.selectMotor(w[1]) ? "OK" : "ERROR unknown motor " + w[1];
-    for (const char* known : {"status", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at",
-                              "load-torque", "load-inertia", "master-hz", "master-wave", "analog-in", "motor",
-                              "feedback"})
+    for (const char* known :
+         {"status", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at", "load-torque",
+          "load-inertia", "load-coupling", "master-hz", "master-wave", "analog-in", "motor", "feedback"})
         if (verb == known) return "ERROR wrong number of arguments for " + verb;
     return "ERROR unknown command " + verb;
 }

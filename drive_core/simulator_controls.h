@@ -36,8 +36,11 @@ struct SimulatorStatus {
     double current_a = 0;
     double loadTorque_Nm = 0;
     double loadInertia_kgm2 = 0;
-    double masterFrequency_Hz = 0; // external encoder / master input, counts per second
-    MasterWave masterWave;         // and the wave on top of it
+    double couplingStiffness_NmPerRad = 0;   // motor-to-load coupling; 0: rigid (one mass)
+    double couplingDamping_NmPerRadPerS = 0; // the coupling's own damping
+    double resonance_Hz = 0;                 // the two-mass resonance it makes with the load; 0 when rigid
+    double masterFrequency_Hz = 0;           // external encoder / master input, counts per second
+    MasterWave masterWave;                   // and the wave on top of it
     std::string motorName;
     bool feedbackConnected = true;      // resolver / encoder wires (off: the drive faults, BDS5 ERR 17)
     bool relayClosed = false;           // fault relay: hardware watchdog OK (BDS5 C2 pins 16/17)
@@ -72,6 +75,14 @@ public:
         (void)wave;
         return false;
     }
+    // Makes the coupling between motor and load compliant (a spring of stiffness N m/rad with a damper of
+    // N m s/rad: a two-mass load with a resonance) or rigid again (stiffness 0). False if the drive has no
+    // load model.
+    virtual bool setLoadCoupling(double stiffness_NmPerRad, double damping_NmPerRadPerS) {
+        (void)stiffness_NmPerRad;
+        (void)damping_NmPerRadPerS;
+        return false;
+    }
     // Breaks (false) or reconnects the motor's feedback wires; a drive that cannot simulate it ignores it.
     virtual void setFeedbackConnected(bool connected) { (void)connected; }
     // The voltage on the drive's analog input; a drive without one ignores it.
@@ -80,8 +91,9 @@ public:
 
 // The side channel's text form, one command per line, for servodesk-sim's control socket and for tests:
 //   input N on|off · enable on|off · motion on|off · home on|off · home-at REV · limits POS NEG (on|off)
-//   load-torque NM · load-inertia KGM2 · master-hz HZ · master-wave sine|square|triangle AMP_HZ FREQ_HZ ·
-//   master-wave off · analog-in V · motor NAME · feedback on|off · power-cycle · status
+//   load-torque NM · load-inertia KGM2 · load-coupling NM_PER_RAD NMS_PER_RAD · load-coupling off · master-hz HZ ·
+//   master-wave sine|square|triangle AMP_HZ FREQ_HZ · master-wave off · analog-in V · motor NAME · feedback on|off ·
+//   power-cycle · status
 // Returns "OK", "ERROR <reason>", or for `status` one line of key=value pairs.
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
 

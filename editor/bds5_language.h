@@ -4,18 +4,13 @@
 #pragma once
 
 #include "bds5_lexer.h"
-
-#include <QObject>
-
-class QsciScintilla;
+#include "language_support.h"
 
 namespace editor {
 
 class Bds5Diagnostics;
-class HelpPopup;
-class ProgramEditor;
 
-class Bds5Language final : public QObject {
+class Bds5Language final : public LanguageSupport {
     Q_OBJECT
 public:
     static constexpr int kFoldMargin = 2;
@@ -23,46 +18,39 @@ public:
     static constexpr int kCompletionMinLetters = 2;
 
     // Installs BDS5 support in editor (once; later calls return the same object).
-    static Bds5Language* install(ProgramEditor& editor);
+    static Bds5Language* install(ProgramEditor& editor) { return installIn<Bds5Language>(editor); }
     // The support installed in editor, or nullptr.
-    static Bds5Language* of(const QsciScintilla* editor);
+    static Bds5Language* of(const QsciScintilla* editor) { return find<Bds5Language>(editor); }
     // Takes it out again (the file became a capture, say): diagnostics, folding, popup and key handling
     // go; the lexer stays with the editor, which may replace it. Nothing happens when none is installed.
-    static void uninstall(ProgramEditor& editor);
+    static void uninstall(ProgramEditor& editor) { uninstallFrom<Bds5Language>(editor); }
 
     Bds5Lexer* lexer() const { return m_lexer; }
     Bds5Diagnostics* diagnostics() const { return m_diagnostics; }
-    HelpPopup* helpPopup() const { return m_help; }
 
     // Light or dark colours for the text, margins, annotations and popups.
     void setTheme(Bds5Lexer::Theme theme);
 
-    // The help topic under (or just before) the cursor; empty when none.
-    QString topicAtCursor() const;
-    // F1: shows the topic's help under the cursor and emits the editor's helpRequested(topic).
-    // Returns the topic (empty: nothing to explain, nothing shown).
-    QString showHelpAtCursor();
-    void hideHelp();
-    // Shows the completion list for the word before the cursor (explicit: even for fewer than two
-    // letters, as Ctrl+Space does). False when nothing matches.
-    bool showCompletions(bool explicitRequest);
+    // The completion list for the word before the cursor (explicit: even for fewer than two letters, as
+    // Ctrl+Space does). False when nothing matches.
+    bool showCompletions(bool explicitRequest) override;
 
 protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
+    void detach() override;
+    bool wordBeforeCursorIsComplete() const override;
 
 private:
+    friend class LanguageSupport;
     explicit Bds5Language(ProgramEditor& editor);
     void charAdded(int ch);
     void completionChosen(int id, const QString& text);
     // [start, cursor) of the word being typed, in bytes; start == cursor when none.
     long wordStartBeforeCursor() const;
+    QByteArray wordBeforeCursor() const;
     bool cursorInCommentOrString() const;
 
-    ProgramEditor& m_editor;
     Bds5Lexer* m_lexer;
     Bds5Diagnostics* m_diagnostics;
-    HelpPopup* m_help;
-    long m_helpPosition = -1; // where the cursor was when the help opened
 };
 
 } // namespace editor

@@ -3,12 +3,11 @@
 #pragma once
 
 #include "bds5_line_styler.h"
-
-#include <Qsci/qscilexercustom.h>
+#include "line_styler_lexer.h"
 
 namespace editor {
 
-class Bds5Lexer final : public QsciLexerCustom {
+class Bds5Lexer final : public LineStylerLexer {
     Q_OBJECT
 public:
     // Style numbers are the Bds5Style values; these aliases keep call sites short.
@@ -27,36 +26,20 @@ public:
         Operator = Bds5Operator,
         Error = Bds5Error,
     };
-    enum class Theme { Light, Dark };
 
     // The theme comes from QSettings "options/theme" ("dark", else light), as the Options dialog saves it.
     explicit Bds5Lexer(QObject* parent = nullptr);
 
     static Theme themeFromSettings();
-    Theme theme() const { return m_theme; }
-    // Changes the palette and reapplies it (see applyStyles).
-    void setTheme(Theme theme);
-    // Gives every style its colour, paper and font (bold commands and labels, italic comments) on top of
-    // the editor's base font. Call after installing the lexer: ProgramEditor::setLanguageLexer sets one
-    // font and a white paper for all styles.
-    void applyStyles(const QFont& base);
-    // The editor's background and foreground for the theme.
-    QColor paper() const;
-    QColor foreground() const;
-
-    QColor defaultPaper(int style) const override;
 
     const char* language() const override { return "BDS5"; }
-    QString description(int style) const override;
-    QColor defaultColor(int style) const override;
-    void styleText(int start, int end) override;
 
     // The styles of one line, one entry per byte of its UTF-8 text. Pure; exposed for tests.
     static QByteArray styleLine(const QByteArray& line) { return styleBds5Line(line); }
 
-private:
-    Theme m_theme;
-    QFont m_base;
+protected:
+    QByteArray lineStyles(const QByteArray& line) const override { return styleBds5Line(line); }
+    std::optional<LineFold> foldLine(const QByteArray& line, int previousState) const override;
 };
 
 } // namespace editor

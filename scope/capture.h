@@ -18,10 +18,13 @@ struct Capture {
     double interval_s = 0.001; // time between samples (RECORD's <Time>, in seconds)
     std::vector<CaptureChannel> channels;
     std::string title; // "Run 3: KV=2400" or the file name; free text for legends and overlays
+    // When the first sample was taken: 0 for a recording; later for a slice of one (an export of the visible
+    // range keeps its times, so a file of the slice plots where the slice was).
+    double start_s = 0;
 
     std::size_t sampleCount() const { return channels.empty() ? 0 : channels.front().values.size(); }
-    // Sample i is taken at i * interval (the first sample is taken when RECORD starts).
-    double timeAt(std::size_t i) const { return double(i) * interval_s; }
+    // Sample i is taken at start + i * interval (the first sample is taken when RECORD starts).
+    double timeAt(std::size_t i) const { return start_s + double(i) * interval_s; }
     // The channel with this name, or nullptr.
     const CaptureChannel* find(const std::string& name) const {
         for (const CaptureChannel& c : channels)

@@ -15,16 +15,18 @@ std::string number(double value, int decimals) {
     return buffer;
 }
 
-// Values keep the drive's resolution: integers as integers, otherwise 3 significant decimals.
+// Values keep the drive's resolution: integers as integers, otherwise 3 significant decimals. A difference
+// rounded to nothing reads 0, not "-0" (adding +0.0 turns -0.0 into 0).
 std::string value(double v) {
-    return number(v, std::abs(v - std::round(v)) < 1e-9 ? 0 : 3);
+    if (std::abs(v - std::round(v)) < 1e-9) return number(std::round(v) + 0.0, 0);
+    return number(v, 3);
 }
 } // namespace
 
 double valueAt(const Capture& capture, std::size_t channel, double t_s) {
     const auto& v = capture.channels.at(channel).values;
     if (v.empty()) return 0;
-    const double position = std::clamp(t_s / capture.interval_s, 0.0, double(v.size() - 1));
+    const double position = std::clamp((t_s - capture.start_s) / capture.interval_s, 0.0, double(v.size() - 1));
     const auto i = std::size_t(position);
     if (i + 1 >= v.size()) return v.back();
     const double f = position - double(i);
@@ -72,11 +74,31 @@ CursorReadout readCursors(const SeriesStore& store, double first_s, double secon
     return r;
 }
 
+double CursorReadout::frequency_hz() const {
+    return delta_s == 0 ? 0 : 1 / std::abs(delta_s);
+}
+
+std::string formatSeconds(double seconds) {
+    const double magnitude = std::abs(seconds);
+    if (magnitude >= 1) return number(seconds, 4) + " s";
+    if (magnitude > 0 && magnitude < 1e-3) return number(seconds * 1e6, 1) + " \u00b5s";
+    return number(seconds * 1e3, 2) + " ms";
+}
+
+std::string formatHertz(double hertz) {
+    const double magnitude = std::abs(hertz);
+    if (magnitude >= 1000) return number(hertz / 1000, 2) + " kHz";
+    return number(hertz, magnitude >= 10 ? 1 : magnitude >= 1 ? 2 : 3) + " Hz";
+}
+
 std::string CursorReadout::text() const {
-    std::string out = "t1 " + number(first_s * 1000, 1) + " ms   t2 " + number(second_s * 1000, 1) + " ms   \u0394t " +
-                      number(delta_s * 1000, 1) + " ms";
-    for (const Row& row : rows) {
-        out += "     " + row.name + " " + value(row.atFirst) + " \u2192 " + value(row.atSecond) + "  \u0394 " +
+    std::string out = "A " + formatSeconds(first_s) + "   B " + formatSeconds(second_s) + "   \u0394t " +
+                      formatSeconds(delta_s) + "   1/\u0394t " +
+                      (delta_s == 0 ? "\u2014" : formatHertz(frequency_hz()));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const Row& row = rows[i];
+        out += i % kRowsPerLine == 0 ? "\n" : "     ";
+        out += row.name + " " + value(row.atFirst) + " \u2192 " + value(row.atSecond) + "  \u0394y " +
                value(row.delta) + (row.unit.empty() ? "" : " " + row.unit);
     }
     return out;

@@ -1,6 +1,7 @@
 // ScopePlot: graphs, axes, overlays, cursors and themes on a QCustomPlot.
 #include "scope_plot.h"
 
+#include "column_graph.h"
 #include "svg_export.h"
 
 #include <qcustomplot.h>
@@ -20,14 +21,26 @@ constexpr int kCursorGrabPixels = 6; // how close a press must be to drag a curs
 constexpr double kZoomStep = 0.8;    // + / - keys
 constexpr double kPanStep = 0.1;     // arrow keys, of the visible span
 constexpr std::size_t kWidePenPoints = 20000;
-const QColor kLight[ScopePlot::kMaxChannels] = {QColor(0x1a, 0x73, 0xe8), QColor(0xd9, 0x30, 0x25),
-                                                QColor(0x18, 0x80, 0x38), QColor(0xe3, 0x74, 0x00)};
-const QColor kDark[ScopePlot::kMaxChannels] = {QColor(0x8a, 0xb4, 0xf8), QColor(0xf2, 0x8b, 0x82),
-                                               QColor(0x81, 0xc9, 0x95), QColor(0xfd, 0xd6, 0x63)};
+const QColor kLight[ScopePlot::kMaxChannels] = {
+    QColor(0x1a, 0x73, 0xe8), QColor(0xd9, 0x30, 0x25), QColor(0x18, 0x80, 0x38), QColor(0xe3, 0x74, 0x00),
+    QColor(0x93, 0x34, 0xe6), QColor(0x12, 0x9e, 0xaf), QColor(0xd0, 0x18, 0x84), QColor(0x79, 0x55, 0x48)};
+const QColor kDark[ScopePlot::kMaxChannels] = {
+    QColor(0x8a, 0xb4, 0xf8), QColor(0xf2, 0x8b, 0x82), QColor(0x81, 0xc9, 0x95), QColor(0xfd, 0xd6, 0x63),
+    QColor(0xc5, 0x8a, 0xf9), QColor(0x78, 0xd9, 0xec), QColor(0xff, 0x8b, 0xcb), QColor(0xbc, 0xaa, 0xa4)};
 
-QString axisLabel(const std::string& name, const std::string& unit) {
-    return unit.empty() ? QString::fromStdString(name)
-                        : QStringLiteral("%1 [%2]").arg(QString::fromStdString(name), QString::fromStdString(unit));
+void widen(std::optional<ValueRange>& range, ValueRange by) {
+    if (!range) range = by;
+    widen(*range, by);
+}
+
+// As QCPAxis::rescale sets a range it found: one of zero size keeps the axis's size, centred on it.
+void setFoundRange(QCPAxis* axis, ValueRange found) {
+    QCPRange range(found.minimum, found.maximum);
+    if (!QCPRange::validRange(range)) {
+        const double centre = (range.lower + range.upper) / 2;
+        range = QCPRange(centre - axis->range().size() / 2, centre + axis->range().size() / 2);
+    }
+    axis->setRange(range);
 }
 } // namespace
 
@@ -55,11 +68,26 @@ ScopePlot::ScopePlot(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
         m_cursor[i] = new QCPItemStraightLine(m_plot);
         m_cursor[i]->setVisible(false);
         m_cursor[i]->setSelectable(false);
+        // The letter rides on its line at the top of the axis rect, whatever the value axes' ranges.
+        QCPItemText* label = m_cursorLabel[i] = new QCPItemText(m_plot);
+        label->setText(i == 0 ? QStringLiteral("A") : QStringLiteral("B"));
+        label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        label->setPositionAlignment(Qt::AlignHCenter | Qt::AlignTop);
+        label->setPadding(QMargins(3, 1, 3, 1));
+        label->setClipToAxisRect(false);
+        label->setVisible(false);
+        label->setSelectable(false);
     }
+    m_readout->setToolTip(tr("Cursors A and B: double-click places the nearer one, drag moves it. Keys, with the "
+                             "plot focused: C places both in view, Space switches A/B, Shift+Left/Right moves the "
+                             "active one a sample, Ctrl+Shift+Left/Right a tenth of the view."));
     connect(m_plot, &QCustomPlot::mousePress, this, &ScopePlot::onMousePress);
     connect(m_plot, &QCustomPlot::mouseMove, this, &ScopePlot::onMouseMove);
     connect(m_plot, &QCustomPlot::mouseRelease, this, &ScopePlot::onMouseRelease);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, &ScopePlot::onDoubleClick);
+    // After the layout, before drawing: the axis rect's width is final, for replots and exports alike.
+    connect(m_plot, &QCustomPlot::afterLayout, this, &ScopePlot::decimateGraphs);
     m_syncTimer.setSingleShot(true);
     m_syncTimer.setInterval(kSyncMs);
     connect(&m_syncTimer, &QTimer::timeout, this, &ScopePlot::syncFromStore);
@@ -73,7 +101,7 @@ QColor ScopePlot::channelColour(std::size_t channel) const {
     return (m_dark ? kDark : kLight)[channel % kMaxChannels];
 }
 
-// Channel 0 on the left axis, 1 on the right, 2 and 3 on further axes outside them.
+// Channel 0 on the left axis, 1 on the right; then even channels left and odd right, each further out.
 void ScopePlot::ensureAxes(std::size_t count) {
     while (std::size_t(m_valueAxes.size()) < count) {
         const auto n = m_valueAxes.size();
@@ -90,8 +118,9 @@ void ScopePlot::ensureAxes(std::size_t count) {
     m_plot->axisRect()->setRangeZoomAxes({m_plot->xAxis}, m_valueAxes);
 }
 
-QCPGraph* ScopePlot::addGraph(std::size_t channel) {
-    QCPGraph* g = m_plot->addGraph(m_plot->xAxis, m_valueAxes.at(qsizetype(channel)));
+// On the first axis until layoutAxes() puts it on the axis of its unit.
+ColumnGraph* ScopePlot::addGraph() {
+    auto* g = new ColumnGraph(m_plot->xAxis, m_valueAxes.first()); // owned by the plot
     g->setAdaptiveSampling(true);
     g->setLineStyle(QCPGraph::lsLine);
     return g;
@@ -99,12 +128,12 @@ QCPGraph* ScopePlot::addGraph(std::size_t channel) {
 
 void ScopePlot::clear() {
     for (const Overlay& o : m_overlays)
-        for (QCPGraph* g : o.graphs) m_plot->removeGraph(g);
+        for (ColumnGraph* g : o.graphs) m_plot->removeGraph(g);
     m_overlays.clear();
-    for (QCPGraph* g : m_graphs) m_plot->removeGraph(g);
+    for (ColumnGraph* g : m_graphs) m_plot->removeGraph(g);
     m_graphs.clear();
     m_store = SeriesStore();
-    m_syncedUntil.clear();
+    m_drawn.reset();
     m_capture = {};
     emit overlaysChanged();
     updateReadout();
@@ -113,37 +142,31 @@ void ScopePlot::clear() {
 
 void ScopePlot::showCapture(const Capture& capture, bool keepPrevious) {
     if (keepPrevious && !m_graphs.isEmpty()) {
-        Overlay o{m_title, m_graphs, true};
-        for (QCPGraph* g : o.graphs) g->removeFromLegend();
-        m_overlays.push_front(o);
+        Overlay o{m_title, m_graphs, true, std::move(m_store)};
+        for (ColumnGraph* g : o.graphs) g->removeFromLegend();
+        m_overlays.push_front(std::move(o));
         m_graphs.clear();
         while (int(m_overlays.size()) > m_maxOverlays) {
-            for (QCPGraph* g : m_overlays.back().graphs) m_plot->removeGraph(g);
+            for (ColumnGraph* g : m_overlays.back().graphs) m_plot->removeGraph(g);
             m_overlays.pop_back();
         }
     } else {
         for (const Overlay& o : m_overlays)
-            for (QCPGraph* g : o.graphs) m_plot->removeGraph(g);
+            for (ColumnGraph* g : o.graphs) m_plot->removeGraph(g);
         m_overlays.clear();
-        for (QCPGraph* g : m_graphs) m_plot->removeGraph(g);
+        for (ColumnGraph* g : m_graphs) m_plot->removeGraph(g);
         m_graphs.clear();
     }
     const std::size_t count = std::min<std::size_t>(capture.channels.size(), kMaxChannels);
     std::vector<std::pair<std::string, std::string>> names;
     for (std::size_t c = 0; c < count; ++c) names.emplace_back(capture.channels[c].name, capture.channels[c].unit);
-    beginLive(names);
+    // The store holds the whole capture, however long; the graphs get its decimation frame by frame.
+    beginTrace(names, std::max<std::size_t>(SeriesStore::kDefaultCapacity, capture.sampleCount()));
     m_capture = capture;
     m_title = QString::fromStdString(capture.title);
-    // The whole capture at once: straight into the graphs (sorted), the store keeps a copy for ranges.
     for (std::size_t c = 0; c < count; ++c) {
         const auto& values = capture.channels[c].values;
-        QVector<QCPGraphData> points(qsizetype(values.size()));
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            points[qsizetype(i)] = {capture.timeAt(i), values[i]};
-            m_store.append(c, {capture.timeAt(i), values[i]});
-        }
-        m_graphs[qsizetype(c)]->data()->set(points, true);
-        m_syncedUntil[c] = values.empty() ? -INFINITY : capture.timeAt(values.size() - 1);
+        for (std::size_t i = 0; i < values.size(); ++i) m_store.append(c, {capture.timeAt(i), values[i]});
     }
     recolourOverlays();
     const double end = capture.sampleCount() > 1 ? capture.timeAt(capture.sampleCount() - 1) : 1.0;
@@ -153,23 +176,36 @@ void ScopePlot::showCapture(const Capture& capture, bool keepPrevious) {
     emit overlaysChanged();
 }
 
+void ScopePlot::replaceCapture(const Capture& capture) {
+    std::deque<Overlay> kept = std::move(m_overlays);
+    m_overlays.clear();
+    showCapture(capture, false); // with no overlays, drops the current trace alone
+    m_overlays = std::move(kept);
+    recolourOverlays();
+    emit overlaysChanged();
+}
+
 void ScopePlot::beginLive(const std::vector<std::pair<std::string, std::string>>& namesAndUnits) {
-    for (QCPGraph* g : m_graphs) m_plot->removeGraph(g);
+    beginTrace(namesAndUnits, SeriesStore::kDefaultCapacity);
+}
+
+void ScopePlot::beginTrace(const std::vector<std::pair<std::string, std::string>>& namesAndUnits,
+                           std::size_t capacity) {
+    for (ColumnGraph* g : m_graphs) m_plot->removeGraph(g);
     m_graphs.clear();
-    m_store = SeriesStore();
+    m_store = SeriesStore(capacity);
+    m_drawn.reset();
     m_capture = {};
     m_title.clear();
     const std::size_t count = std::min<std::size_t>(namesAndUnits.size(), kMaxChannels);
-    ensureAxes(std::max<std::size_t>(count, 1));
-    m_syncedUntil.assign(count, -INFINITY);
     for (std::size_t c = 0; c < count; ++c) {
         const auto& [name, unit] = namesAndUnits[c];
         m_store.addChannel(name, unit);
-        QCPGraph* g = addGraph(c);
+        ColumnGraph* g = addGraph();
         g->setName(QString::fromStdString(name));
-        m_valueAxes[qsizetype(c)]->setLabel(axisLabel(name, unit));
         m_graphs.append(g);
     }
+    layoutAxes();
     applyTheme();
     updateReadout();
 }
@@ -183,21 +219,71 @@ void ScopePlot::scheduleSync() {
     if (!m_syncTimer.isActive()) m_syncTimer.start();
 }
 
-// Hands the samples appended since the last sync to the graphs, and drops what the store dropped.
+// Live samples reach the graphs with the next frame's decimation (the store's revision has moved on).
 void ScopePlot::syncFromStore() {
-    for (std::size_t c = 0; c < std::size_t(m_graphs.size()); ++c) {
-        const auto& samples = m_store.channel(c).samples;
-        auto first = samples.end();
-        while (first != samples.begin() && std::prev(first)->time_s > m_syncedUntil[c]) --first;
-        for (auto it = first; it != samples.end(); ++it) m_graphs[qsizetype(c)]->addData(it->time_s, it->value);
-        if (first != samples.end()) m_syncedUntil[c] = samples.back().time_s;
-        if (!samples.empty()) m_graphs[qsizetype(c)]->data()->removeBefore(samples.front().time_s);
-    }
     updateReadout(); // new samples under the cursors (at most once per kSyncMs)
     requestReplot();
 }
 
+// Each visible graph gets its store's min/max decimation for the x range, about a column per pixel of the
+// axis rect: O(width) points a graph, whatever the number of samples (ColumnGraph::showRange).
+void ScopePlot::decimateGraphs() {
+    const QCPRange x = m_plot->xAxis->range();
+    const int columns = std::max(1, m_plot->axisRect()->width());
+    const DrawnFor now{x.lower, x.upper, columns, m_store.revision()};
+    if (m_drawn == now) return;
+    m_drawn = now;
+    const auto feed = [&x, columns](const SeriesStore& store, const QList<ColumnGraph*>& graphs) {
+        for (qsizetype c = 0; c < graphs.size() && std::size_t(c) < store.channelCount(); ++c)
+            if (graphs[c]->visible()) graphs[c]->showRange(store, std::size_t(c), x.lower, x.upper, columns);
+    };
+    feed(m_store, m_graphs);
+    for (const Overlay& o : m_overlays)
+        if (o.visible) feed(o.store, o.graphs);
+}
+
+// The current trace's channels grouped onto value axes (axis_groups.h); every graph, an overlay's too, goes
+// on the axis of its unit.
+void ScopePlot::layoutAxes() {
+    std::vector<std::pair<std::string, std::string>> namesAndUnits;
+    for (std::size_t c = 0; c < std::size_t(m_graphs.size()) && c < m_store.channelCount(); ++c)
+        namesAndUnits.emplace_back(m_store.channel(c).name, m_store.channel(c).unit);
+    m_layout = groupAxes(namesAndUnits, m_axisMode);
+    ensureAxes(std::max<std::size_t>(m_layout.axes.size(), 1));
+    m_valueAxes.first()->setLabel(QString());
+    for (std::size_t a = 0; a < m_layout.axes.size(); ++a)
+        m_valueAxes[qsizetype(a)]->setLabel(QString::fromStdString(m_layout.axes[a].label));
+    for (qsizetype c = 0; c < m_graphs.size(); ++c)
+        m_graphs[c]->setValueAxis(m_valueAxes[qsizetype(m_layout.axisOf[std::size_t(c)])]);
+    for (Overlay& o : m_overlays)
+        for (qsizetype c = 0; c < o.graphs.size() && std::size_t(c) < o.store.channelCount(); ++c)
+            o.graphs[c]->setValueAxis(axisForUnit(o.store.channel(std::size_t(c)).unit));
+}
+
+// An earlier trace's channel of a unit the current one does not have goes on the first axis.
+QCPAxis* ScopePlot::axisForUnit(const std::string& unit) const {
+    if (m_axisMode == AxisMode::PerUnit)
+        for (std::size_t a = 0; a < m_layout.axes.size(); ++a)
+            if (m_layout.axes[a].unit == unit) return m_valueAxes[qsizetype(a)];
+    return m_valueAxes.first();
+}
+
+void ScopePlot::setAxisMode(AxisMode mode) {
+    m_axisMode = mode;
+    layoutAxes();
+    applyTheme();
+    autoScale();
+}
+
+QList<QCPAxis*> ScopePlot::valueAxes() const {
+    return m_valueAxes.mid(0, qsizetype(std::max<std::size_t>(m_layout.axes.size(), 1)));
+}
+
 int ScopePlot::pointCount(std::size_t channel) const {
+    return channel < std::size_t(m_graphs.size()) ? int(m_store.channel(channel).samples.size()) : 0;
+}
+
+int ScopePlot::drawnPointCount(std::size_t channel) const {
     return channel < std::size_t(m_graphs.size()) ? m_graphs[qsizetype(channel)]->dataCount() : 0;
 }
 
@@ -222,7 +308,8 @@ void ScopePlot::setOverlayVisible(int index, bool visible) {
     if (index < 0 || index >= overlayCount()) return;
     Overlay& o = m_overlays[std::size_t(index)];
     o.visible = visible;
-    for (QCPGraph* g : o.graphs) g->setVisible(visible);
+    for (ColumnGraph* g : o.graphs) g->setVisible(visible);
+    m_drawn.reset(); // a hidden overlay's graphs were not kept up to date
     requestReplot(); // not overlaysChanged(): the overlays are the same ones, a menu may be toggling them
 }
 
@@ -256,6 +343,11 @@ void ScopePlot::setCursors(double first_s, double second_s) {
         m_cursor[i]->point1->setCoords(m_cursorTime[i], 0);
         m_cursor[i]->point2->setCoords(m_cursorTime[i], 1);
         m_cursor[i]->setVisible(true);
+        QPen pen = m_cursor[i]->pen();
+        pen.setStyle(i == m_activeCursor ? Qt::SolidLine : Qt::DashLine); // the one the keys move is solid
+        m_cursor[i]->setPen(pen);
+        m_cursorLabel[i]->position->setCoords(m_cursorTime[i], 0);
+        m_cursorLabel[i]->setVisible(true);
     }
     updateReadout();
     emit cursorsChanged();
@@ -264,6 +356,7 @@ void ScopePlot::setCursors(double first_s, double second_s) {
 
 void ScopePlot::setCursorsVisible(bool visible) {
     for (auto* c : m_cursor) c->setVisible(visible);
+    for (auto* c : m_cursorLabel) c->setVisible(visible);
     updateReadout();
     requestReplot();
 }
@@ -283,11 +376,29 @@ void ScopePlot::updateReadout() {
                                         : tr("Double-click to place the cursors; drag them to move."));
 }
 
+// Time: the span of every visible trace; each value axis: the whole span of its channel's visible traces.
+// From the stores (O(log n) a channel): the graphs hold only what the last frame showed.
 void ScopePlot::autoScale() {
-    m_plot->xAxis->rescale(true);
+    std::optional<ValueRange> time;
+    std::vector<std::optional<ValueRange>> values(std::size_t(m_valueAxes.size()));
+    // Each value axis over the channels drawn against it (one unit, or every channel when shared).
+    const auto include = [this, &time, &values](const SeriesStore& store, const QList<ColumnGraph*>& graphs) {
+        for (qsizetype c = 0; c < graphs.size() && std::size_t(c) < store.channelCount(); ++c) {
+            const auto& samples = store.channel(std::size_t(c)).samples;
+            if (!graphs[c]->visible() || samples.empty()) continue;
+            widen(time, {samples.front().time_s, samples.back().time_s});
+            const auto range = store.valueRange(std::size_t(c), samples.front().time_s, samples.back().time_s);
+            const auto axis = std::size_t(m_valueAxes.indexOf(graphs[c]->valueAxis()));
+            if (axis < values.size() && std::isfinite(range->minimum) && std::isfinite(range->maximum))
+                widen(values[axis], *range); // QCPAxis::rescale skipped NaN too
+        }
+    };
+    include(m_store, m_graphs);
+    for (const Overlay& o : m_overlays) include(o.store, o.graphs);
+    if (time) setFoundRange(m_plot->xAxis, *time);
     for (qsizetype c = 0; c < m_valueAxes.size(); ++c) {
         QCPAxis* axis = m_valueAxes[c];
-        axis->rescale(true);
+        if (values[std::size_t(c)]) setFoundRange(axis, *values[std::size_t(c)]);
         QCPRange r = axis->range();
         const double pad = std::max(r.size() * 0.06, std::max(std::abs(r.center()) * 0.05, 1e-9));
         axis->setRange(r.lower - pad, r.upper + pad);
@@ -314,9 +425,11 @@ void ScopePlot::applyTheme() {
     QList<QCPAxis*> axes = m_valueAxes;
     axes << m_plot->xAxis << m_plot->xAxis2;
     for (QCPAxis* axis : axes) {
-        const int channel = int(m_valueAxes.indexOf(axis));
-        const QColor colour =
-            channel >= 0 && channel < m_graphs.size() ? channelColour(std::size_t(channel)) : foreground;
+        // An axis of one channel takes its colour; one shared by several stays neutral (the legend tells them
+        // apart).
+        const auto index = std::size_t(m_valueAxes.indexOf(axis));
+        const bool single = index < m_layout.axes.size() && m_layout.axes[index].channels.size() == 1;
+        const QColor colour = single ? channelColour(m_layout.axes[index].channels.front()) : foreground;
         axis->setBasePen(QPen(colour));
         axis->setTickPen(QPen(colour));
         axis->setSubTickPen(QPen(colour));
@@ -330,7 +443,11 @@ void ScopePlot::applyTheme() {
     m_plot->legend->setTextColor(foreground);
     m_plot->legend->setBorderPen(QPen(grid));
     const QColor cursor = m_dark ? QColor(0xff, 0xff, 0xff, 170) : QColor(0x20, 0x21, 0x24, 170);
-    for (auto* c : m_cursor) c->setPen(QPen(cursor, 1, Qt::DashLine));
+    for (int i = 0; i < 2; ++i) {
+        m_cursor[i]->setPen(QPen(cursor, 1, i == m_activeCursor ? Qt::SolidLine : Qt::DashLine));
+        m_cursorLabel[i]->setColor(foreground);
+        m_cursorLabel[i]->setBrush(QColor(background.red(), background.green(), background.blue(), 220));
+    }
     m_readout->setStyleSheet(
         QStringLiteral("QLabel { color: %1; background: %2; }").arg(foreground.name(), background.name()));
     recolourOverlays();
@@ -340,6 +457,7 @@ void ScopePlot::applyTheme() {
 bool ScopePlot::eventFilter(QObject* watched, QEvent* event) {
     if (watched != m_plot || event->type() != QEvent::KeyPress) return QWidget::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);
+    if (cursorKey(key->key(), key->modifiers())) return true;
     QCPAxis* x = m_plot->xAxis;
     switch (key->key()) {
     case Qt::Key_Plus:
@@ -361,12 +479,35 @@ bool ScopePlot::eventFilter(QObject* watched, QEvent* event) {
     return true;
 }
 
+// The cursor keys (cursor_keys.h); false for any other key. Space and the arrows act on shown cursors only.
+bool ScopePlot::cursorKey(int key, Qt::KeyboardModifiers modifiers) {
+    const bool shift = modifiers.testFlag(Qt::ShiftModifier);
+    const bool ctrl = modifiers.testFlag(Qt::ControlModifier);
+    CursorKey action;
+    if (key == Qt::Key_C && !ctrl && !modifiers.testFlag(Qt::AltModifier))
+        action = CursorKey::Place;
+    else if (key == Qt::Key_Space && cursorsVisible())
+        action = CursorKey::SwitchActive;
+    else if ((key == Qt::Key_Left || key == Qt::Key_Right) && shift && cursorsVisible())
+        action = key == Qt::Key_Left ? (ctrl ? CursorKey::JumpBack : CursorKey::StepBack)
+                                     : (ctrl ? CursorKey::JumpForward : CursorKey::StepForward);
+    else
+        return false;
+    const QCPRange x = m_plot->xAxis->range();
+    const CursorView view{x.lower, x.upper, m_capture.channels.empty() ? 0.0 : m_capture.interval_s};
+    const CursorPair moved = applyCursorKey({m_cursorTime[0], m_cursorTime[1], m_activeCursor}, action, view);
+    m_activeCursor = moved.active;
+    setCursors(moved.a_s, moved.b_s);
+    return true;
+}
+
 void ScopePlot::onMousePress(QMouseEvent* event) {
     m_dragging = -1;
     if (!cursorsVisible()) return;
     for (int i = 0; i < 2; ++i) {
         if (std::abs(m_plot->xAxis->coordToPixel(m_cursorTime[i]) - event->position().x()) <= kCursorGrabPixels) {
             m_dragging = i;
+            m_activeCursor = i; // the keys move the cursor last dragged
             m_plot->setInteraction(QCP::iRangeDrag, false);
             return;
         }
@@ -390,7 +531,8 @@ void ScopePlot::onDoubleClick(QMouseEvent* event) {
     const double t = m_plot->xAxis->pixelToCoord(event->position().x());
     double times[2] = {m_cursorTime[0], m_cursorTime[1]};
     if (!cursorsVisible()) times[0] = times[1] = t;
-    times[std::abs(t - times[0]) <= std::abs(t - times[1]) ? 0 : 1] = t;
+    m_activeCursor = std::abs(t - times[0]) <= std::abs(t - times[1]) ? 0 : 1;
+    times[m_activeCursor] = t;
     setCursors(times[0], times[1]);
 }
 
@@ -409,9 +551,11 @@ bool ScopePlot::saveSvg(const QString& path, int width, int height) {
     svg.timeFrom_s = m_plot->xAxis->range().lower;
     svg.timeTo_s = m_plot->xAxis->range().upper;
     for (qsizetype c = 0; c < m_graphs.size() && std::size_t(c) < m_capture.channels.size(); ++c)
-        svg.channels.push_back({&m_capture.channels[std::size_t(c)], m_valueAxes[c]->range().lower,
-                                m_valueAxes[c]->range().upper, channelColour(std::size_t(c)).name().toStdString()});
+        svg.channels.push_back({&m_capture.channels[std::size_t(c)], m_graphs[c]->valueAxis()->range().lower,
+                                m_graphs[c]->valueAxis()->range().upper,
+                                channelColour(std::size_t(c)).name().toStdString()});
     svg.interval_s = m_capture.interval_s;
+    svg.start_s = m_capture.start_s;
     QFile file(path);
     return file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
            file.write(QByteArray::fromStdString(writeSvg(svg))) > 0;

@@ -61,10 +61,15 @@ double applyWindow(std::span<const double> x, SpectrumWindow window, double* in)
     return sum;
 }
 
-void findPeak(Spectrum& s) {
-    const std::size_t first = s.window == SpectrumWindow::Rectangular ? 1 : 2;
+std::size_t firstPeakBin(const Spectrum& s) {
+    return s.window == SpectrumWindow::Rectangular ? 1 : 2;
+}
+
+// The largest bin from `first` up to Nyquist, refined as the header says; unset when first lies past Nyquist.
+std::optional<SpectrumPeak> largestFrom(const Spectrum& s, std::size_t first) {
+    if (s.magnitude_db.empty()) return std::nullopt;
     const std::size_t last = s.magnitude_db.size() - 1;
-    if (first > last) return;
+    if (first > last) return std::nullopt;
     const auto top = std::max_element(s.magnitude_db.begin() + std::ptrdiff_t(first), s.magnitude_db.end());
     SpectrumPeak p;
     p.bin = std::size_t(top - s.magnitude_db.begin());
@@ -80,7 +85,11 @@ void findPeak(Spectrum& s) {
             p.interpolated_db = beta - 0.25 * (alpha - gamma) * delta;
         }
     }
-    s.peak = p;
+    return p;
+}
+
+void findPeak(Spectrum& s) {
+    s.peak = largestFrom(s, firstPeakBin(s));
 }
 
 Spectrum refuse(Spectrum s, Spectrum::Status status, std::string why) {
@@ -134,6 +143,13 @@ Spectrum computeSpectrum(std::span<const double> values, double interval_s, cons
     }
     findPeak(s);
     return s;
+}
+
+std::optional<SpectrumPeak> findPeakFrom(const Spectrum& s, double from_hz) {
+    if (!s.ok() || !(s.resolution_hz > 0)) return std::nullopt;
+    const double bin = std::ceil(std::max(from_hz, 0.0) / s.resolution_hz - 1e-9);
+    if (bin > double(s.magnitude_db.size())) return std::nullopt;
+    return largestFrom(s, std::max(firstPeakBin(s), std::size_t(bin)));
 }
 
 Spectrum computeSpectrum(const Capture& capture, std::size_t channel, const SpectrumOptions& options) {

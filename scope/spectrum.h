@@ -77,5 +77,9 @@ Spectrum computeSpectrum(std::span<const double> values, double interval_s, cons
 Spectrum computeSpectrum(const Capture& capture, std::size_t channel, const SpectrumOptions& options = {});
 // A store's channel, at its samples' own times (see the resampling rule above).
 Spectrum computeSpectrum(const Channel& channel, const SpectrumOptions& options = {});
+// The peak as above, searched only from the first bin at or above from_hz (and outside DC's main lobe): a
+// resonance above a loop's bandwidth, where a step's own 1/f content would otherwise be the largest. Unset
+// when the spectrum is not Ok or from_hz lies past Nyquist.
+std::optional<SpectrumPeak> findPeakFrom(const Spectrum& spectrum, double from_hz);
 
 } // namespace scope

@@ -56,7 +56,7 @@ std::string writeSvg(const SvgPlot& plot) {
         out += "<polyline fill=\"none\" stroke=\"" + c.colour + "\" stroke-width=\"1.5\" points=\"";
         const auto& v = c.channel->values;
         for (std::size_t i = 0; i < v.size(); ++i) {
-            const double t = double(i) * plot.interval_s;
+            const double t = plot.start_s + double(i) * plot.interval_s;
             if (t < plot.timeFrom_s - plot.interval_s || t > plot.timeTo_s + plot.interval_s) continue;
             const double y = std::clamp(bottom - (v[i] - c.from) / range * (bottom - top), top, bottom);
             out += num(x(t)) + "," + num(y) + " ";

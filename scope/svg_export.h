@@ -20,6 +20,7 @@ struct SvgPlot {
     int width = 800;
     int height = 450;
     double interval_s = 0.001;
+    double start_s = 0; // the time of the channels' first sample (Capture::start_s)
     double timeFrom_s = 0;
     double timeTo_s = 1;
     std::vector<Channel> channels;

@@ -2,7 +2,7 @@
 #include "editor_tabs.h"
 
 #include "editor/bds5_language.h"
-#include "pmc960/mpl_language.h"
+#include "editor/mpl_language.h"
 #include "editor/program_editor.h"
 
 #include <QFileInfo>
@@ -130,11 +130,11 @@ void EditorTabs::applyLexer(editor::ProgramEditor* editor, FileType type) {
     editor->setProperty(kTypeProperty, wanted);
     QsciLexer* old = editor->lexer();
     editor::Bds5Language::uninstall(*editor);
-    MplLanguage::uninstall(*editor);
+    editor::MplLanguage::uninstall(*editor);
     if (wanted == Bds5) {
         editor::Bds5Language::install(*editor); // lexer, folding, diagnostics, completion, F1 help
     } else if (wanted == Mpl) {
-        MplLanguage::install(*editor); // MPL lexer, folding, program check, F1 help (issue 9)
+        editor::MplLanguage::install(*editor); // MPL lexer, folding, program check, F1 help (issue 9)
     } else {
         editor->setLexer(nullptr);
     }

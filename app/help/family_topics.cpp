@@ -1,8 +1,8 @@
 // FamilyTopics: the SC750 and PMC-960 references as help topics, from their catalogs.
 #include "family_topics.h"
 
-#include "app/sc750/servobasic_language.h"
 #include "editor/mpl_help.h"
+#include "editor/servobasic_help.h"
 
 #include "drive_core/catalog/pmc960_catalog.h"
 #include "drive_core/catalog/sc750_catalog.h"
@@ -71,13 +71,13 @@ const QList<ReferenceTopic>& FamilyTopics::sc750() {
         out << topic(ReferenceTopic::Kind::Page, QStringLiteral("intro"), QObject::tr("General"), {}, sc750Intro());
         for (const cat::StatementInfo& s : cat::statements())
             out << topic(ReferenceTopic::Kind::Command, str(s.name), str(s.name), str(s.description),
-                         ServoBasicLanguage::helpHtml(str(s.name)));
+                         editor::servoBasicHelpHtml(str(s.name)));
         for (const cat::FunctionInfo& f : cat::functions())
             out << topic(ReferenceTopic::Kind::Command, str(f.name), QObject::tr("%1 (function)").arg(str(f.name)),
-                         str(f.description), ServoBasicLanguage::helpHtml(str(f.name)));
+                         str(f.description), editor::servoBasicHelpHtml(str(f.name)));
         for (const cat::VariableInfo& v : cat::variables())
             out << topic(ReferenceTopic::Kind::Variable, str(v.name), str(v.name), str(v.description),
-                         ServoBasicLanguage::helpHtml(str(v.name)));
+                         editor::servoBasicHelpHtml(str(v.name)));
         for (const cat::FaultInfo& f : cat::faults()) {
             const QString key = QStringLiteral("FAULT %1").arg(f.code);
             const QString html = QObject::tr("<b>FAULTCODE %1</b> — front panel <b>%2</b><p><b>SC752/SC753:</b> "

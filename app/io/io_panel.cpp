@@ -130,6 +130,25 @@ QWidget* IoPanel::makeBench() {
     m_inertia->setDecimals(5);
     m_inertia->setSingleStep(0.0001);
     m_inertia->setSuffix(QStringLiteral(" kg\u00b7m\u00b2"));
+    // The coupling: 0 N m/rad is rigid. Up to 2000 N m/rad puts a resonance anywhere from a few Hz to well
+    // past the drive's 500 Hz Nyquist limit with the reference motors and loads.
+    m_stiffness = new QDoubleSpinBox(box);
+    m_stiffness->setObjectName(QStringLiteral("couplingStiffness"));
+    m_stiffness->setRange(0, 2000);
+    m_stiffness->setDecimals(1);
+    m_stiffness->setSingleStep(10);
+    m_stiffness->setSuffix(QStringLiteral(" N\u00b7m/rad"));
+    m_stiffness->setSpecialValueText(tr("rigid"));
+    m_stiffness->setToolTip(tr("A compliant coupling between motor and load: the load becomes a second mass on a "
+                               "spring, with a resonance the velocity loop can excite. 0 = rigid."));
+    m_damping = new QDoubleSpinBox(box);
+    m_damping->setObjectName(QStringLiteral("couplingDamping"));
+    m_damping->setRange(0, 10);
+    m_damping->setDecimals(4);
+    m_damping->setSingleStep(0.001);
+    m_damping->setSuffix(QStringLiteral(" N\u00b7m\u00b7s/rad"));
+    m_resonance = new QLabel(tr("rigid: no resonance"), box);
+    m_resonance->setObjectName(QStringLiteral("couplingResonance"));
     m_master = new QDoubleSpinBox(box);
     m_master->setRange(-1e6, 1e6);
     m_master->setDecimals(0);
@@ -140,6 +159,9 @@ QWidget* IoPanel::makeBench() {
     m_powerCycle = new QPushButton(tr("Power Cycle"), box);
     form->addRow(tr("Load torque"), m_torque);
     form->addRow(tr("Load inertia"), m_inertia);
+    form->addRow(tr("Coupling stiffness"), m_stiffness);
+    form->addRow(tr("Coupling damping"), m_damping);
+    form->addRow(tr("Resonance"), m_resonance);
     form->addRow(tr("Master encoder"), m_master);
     form->addRow(tr("Motor"), m_motor);
     form->addRow(QString(), m_powerCycle);
@@ -147,6 +169,12 @@ QWidget* IoPanel::makeBench() {
             [this](double v) { bench([v](drive_core::SimulatorControls& c) { c.setLoadTorque_Nm(v); }); });
     connect(m_inertia, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { bench([v](drive_core::SimulatorControls& c) { c.setLoadInertia_kgm2(v); }); });
+    auto coupling = [this] {
+        const double k = m_stiffness->value(), d = m_damping->value();
+        bench([k, d](drive_core::SimulatorControls& c) { c.setLoadCoupling(k, d); });
+    };
+    connect(m_stiffness, &QDoubleSpinBox::valueChanged, this, coupling);
+    connect(m_damping, &QDoubleSpinBox::valueChanged, this, coupling);
     connect(m_master, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { bench([v](drive_core::SimulatorControls& c) { c.setMasterFrequency_Hz(v); }); });
     connect(m_motor, &QComboBox::currentTextChanged, this, [this](const QString& name) {
@@ -159,6 +187,10 @@ QWidget* IoPanel::makeBench() {
 
 bool IoPanel::isSimulated() const {
     return m_simulator != nullptr;
+}
+
+QString IoPanel::resonanceText() const {
+    return m_resonance->text();
 }
 
 QString IoPanel::readoutText() const {
@@ -215,6 +247,11 @@ void IoPanel::showStatus(const drive_core::SimulatorStatus& status) {
     follow(m_torque, status.loadTorque_Nm);
     follow(m_inertia, status.loadInertia_kgm2);
     follow(m_master, status.masterFrequency_Hz);
+    follow(m_stiffness, status.couplingStiffness_NmPerRad);
+    follow(m_damping, status.couplingDamping_NmPerRadPerS);
+    m_resonance->setText(status.resonance_Hz > 0
+                             ? tr("%1 Hz (motor and load on the spring)").arg(status.resonance_Hz, 0, 'f', 1)
+                             : tr("rigid: no resonance"));
     if (const QString motor = QString::fromStdString(status.motorName); !motor.isEmpty() && !m_motor->hasFocus()) {
         const QSignalBlocker quiet(m_motor);
         m_motor->setCurrentText(motor);

@@ -1,7 +1,7 @@
 // IoPanel: the simulated drive's bench — toggle inputs I1-I16, ENABLE, MOTION, HOME and the limit
-// switches, see outputs O1-O8, set load torque/inertia and the master encoder frequency, choose the motor,
-// cycle power — through SimulatorLink::control(), never through the drive's serial port. On a real drive
-// it shows the inputs and outputs read through the session (P IN OUT). GUI thread.
+// switches, see outputs O1-O8, set load torque/inertia, a compliant coupling (two-mass resonance) and the master
+// encoder frequency, choose the motor, cycle power — through SimulatorLink::control(), never through the drive's serial
+// port. On a real drive it shows the inputs and outputs read through the session (P IN OUT). GUI thread.
 #pragma once
 
 #include "drive_core/simulator_controls.h"
@@ -39,6 +39,11 @@ public:
     QString readoutText() const;
     // The bench's load torque field (N m), as a user types into it.
     QDoubleSpinBox* loadTorqueField() const { return m_torque; }
+    QDoubleSpinBox* loadInertiaField() const { return m_inertia; }
+    // The coupling's stiffness (N m/rad, 0 = rigid) and damping (N m s/rad) fields, and the resonance they make.
+    QDoubleSpinBox* couplingStiffnessField() const { return m_stiffness; }
+    QDoubleSpinBox* couplingDampingField() const { return m_damping; }
+    QString resonanceText() const;
     bool isSimulated() const;
 
 private:
@@ -67,6 +72,9 @@ private:
     QDoubleSpinBox* m_torque = nullptr;
     QDoubleSpinBox* m_inertia = nullptr;
     QDoubleSpinBox* m_master = nullptr;
+    QDoubleSpinBox* m_stiffness = nullptr;
+    QDoubleSpinBox* m_damping = nullptr;
+    QLabel* m_resonance = nullptr;
     QComboBox* m_motor = nullptr;
     QLabel* m_readout = nullptr;
     QLabel* m_source = nullptr;

@@ -10,7 +10,6 @@
 #include "sc750_status_display.h"
 #include "sc750_variables_dock.h"
 #include "sc750_watch_source.h"
-#include "servobasic_language.h"
 
 #include "editor_area.h"
 #include "editor_tabs.h"
@@ -20,6 +19,7 @@
 #include "terminal_dock.h"
 
 #include "editor/program_editor.h"
+#include "editor/servobasic_language.h"
 #include "resources/resources.h"
 
 #include <QAction>
@@ -287,8 +287,8 @@ void Sc750Workspace::updateActions() {
 void Sc750Workspace::followEditor(editor::ProgramEditor* editor) {
     if (!editor) return;
     const bool basic = fileTypeOf(m_window.editorArea()->tabs()->displayName(editor)) == FileType::Sc750Program;
-    if (basic) ServoBasicLanguage::install(*editor);
-    else ServoBasicLanguage::uninstall(*editor);
+    if (basic) editor::ServoBasicLanguage::install(*editor);
+    else editor::ServoBasicLanguage::uninstall(*editor);
     if (m_editor != editor) {
         if (m_editor) m_editor->disconnect(this);
         m_editor = editor;

@@ -9,7 +9,9 @@
 #include "play_terminal_fold.h"
 #include "record_dialog.h"
 #include "scope_catalog.h"
+#include "scope_export.h"
 #include "scope_view.h"
+#include "spectrum_view.h"
 #include "terminal_dock.h"
 #include "transfer_dialog.h"
 #include "transfer_reporter.h"
@@ -56,12 +58,14 @@ std::vector<std::string> toStd(const QStringList& lines) {
 ScopeController::ScopeController(MainWindow& window)
     : QObject(&window), m_window(window), m_menu(new QMenu(tr("S&cope"), &window)),
       m_scopeDock(new QDockWidget(tr("Scope"), &window)), m_tuningDock(new QDockWidget(tr("Tuning"), &window)),
-      m_view(new ScopeView(m_scopeDock)), m_tuning(new TuningPanel(window, m_tuningDock)) {
+      m_view(new ScopeView(m_scopeDock)), m_tuning(new TuningPanel(window, m_tuningDock)),
+      m_spectrum(new SpectrumView(&window)) {
     m_menu->setObjectName(QStringLiteral("scopeMenu"));
     m_scopeDock->setObjectName(QStringLiteral("scopeDock"));
     m_scopeDock->setWidget(m_view);
     m_tuningDock->setObjectName(QStringLiteral("tuningDock"));
     m_tuningDock->setWidget(m_tuning);
+    m_export = new ScopeExport(*m_view, this);
 
     m_menu->addAction(tr("From &Drive..."), QKeySequence(tr("Ctrl+Alt+D")), this, &ScopeController::fromDrive);
     m_menu->addAction(tr("View &Again"), this, &ScopeController::viewAgain);
@@ -69,15 +73,28 @@ ScopeController::ScopeController(MainWindow& window)
     m_menu->addAction(tr("&Save CSV..."), this, &ScopeController::saveCsvAs);
     m_menu->addSeparator();
     m_menu->addAction(tr("&View Data"), this, &ScopeController::viewData);
+    m_menu->addAction(tr("&Math Channel..."), m_view, &ScopeView::openMathDialog);
     m_menu->addAction(tr("&Print Plot..."), this, &ScopeController::printPlot);
     m_menu->addAction(tr("&Export Plot (PDF, PNG, SVG)..."), this, &ScopeController::exportPlot);
+    m_export->addRangeChoice(m_menu); // whole record or visible range, for Save CSV and Export Plot
     m_menu->addSeparator();
     m_menu->addAction(tr("&Frequency Response..."), this, &ScopeController::frequencyResponse);
+    QAction* spectrumAction =
+        m_menu->addAction(tr("Spect&rum..."), QKeySequence(tr("Ctrl+Alt+F")), this, &ScopeController::spectrum);
+    spectrumAction->setToolTip(tr("Spectrum (FFT) of a channel of the shown capture: find a resonance, set LPFHZ"));
+    // Where the captures are looked at: the Scope dock and the tuning panel's scope.
+    for (ScopeView* view : {m_view, m_tuning->view()})
+        view->toolBar()
+            ->addAction(tr("Spectrum"), this, &ScopeController::spectrum)
+            ->setToolTip(spectrumAction->toolTip());
     m_menu->addAction(tr("&Watch Variables..."), this, &ScopeController::watchVariables);
     m_menu->addSeparator();
     m_menu->addAction(terminalTabAction(m_window, m_window.terminalDock(), m_scopeDock, tr("Sc&ope"), this));
     m_menu->addAction(terminalTabAction(m_window, m_window.terminalDock(), m_tuningDock, tr("&Tuning Panel"), this));
     connect(this, &ScopeController::captureShown, this, &ScopeController::keepForBode);
+    connect(this, &ScopeController::captureShown, m_spectrum, &SpectrumView::showCapture);
+    connect(&m_tuning->runner(), &TuningRunner::runFinished, m_spectrum,
+            [this](const TuningRun& run) { m_spectrum->showCapture(run.capture); });
     connect(&m_tuning->runner(), &TuningRunner::runFinished, this,
             [this](const TuningRun& run) { keepForBode(run.capture); });
     // Each run's PLAY listing would put 250-300 lines in the terminal: one line stands for them.
@@ -102,6 +119,12 @@ BodeView* ScopeController::frequencyResponse() {
     m_bode->show();
     m_bode->raise();
     return m_bode;
+}
+
+SpectrumView* ScopeController::spectrum() {
+    m_spectrum->show();
+    m_spectrum->raise();
+    return m_spectrum;
 }
 
 WatchView* ScopeController::watchVariables() {
@@ -210,9 +233,10 @@ void ScopeController::saveCsvAs() {
 bool ScopeController::saveCsv(const QString& path) {
     if (!m_last) return false;
     QFile file(path);
-    const bool ok = file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
-                    file.write(QByteArray::fromStdString(scope::writeCsv(*m_last))) >= 0;
-    status(ok ? tr("Saved %1").arg(QFileInfo(path).fileName())
+    const bool ok =
+        file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+        file.write(QByteArray::fromStdString(scope::writeCsv(m_export->forCsv(m_view->withMath(*m_last))))) >= 0;
+    status(ok ? tr("Saved %1%2").arg(QFileInfo(path).fileName(), m_export->rangeNote())
               : tr("Cannot write %1: %2").arg(path, file.errorString()));
     return ok;
 }
@@ -228,7 +252,7 @@ QDialog* ScopeController::viewData() {
     dialog->setWindowTitle(tr("Scope Data \u2014 %1").arg(QString::fromStdString(m_last->title)));
     auto* layout = new QVBoxLayout(dialog);
     auto* table = new QTableView(dialog);
-    table->setModel(new CaptureTableModel(*m_last, table));
+    table->setModel(new CaptureTableModel(m_view->withMath(*m_last), table));
     table->setAlternatingRowColors(true);
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
@@ -268,12 +292,9 @@ void ScopeController::exportPlot() {
 }
 
 bool ScopeController::exportTo(const QString& path) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    scope::ScopePlot* plot = m_view->plot();
-    const bool ok = suffix == QLatin1String("png")   ? plot->savePng(path)
-                    : suffix == QLatin1String("svg") ? plot->saveSvg(path)
-                                                     : plot->savePdf(path);
-    status(ok ? tr("Exported the plot to %1").arg(QFileInfo(path).fileName()) : tr("Cannot write %1").arg(path));
+    const bool ok = m_export->savePlot(path); // PDF, PNG or SVG by the suffix
+    status(ok ? tr("Exported the plot to %1%2").arg(QFileInfo(path).fileName(), m_export->rangeNote())
+              : tr("Cannot write %1").arg(path));
     return ok;
 }
 

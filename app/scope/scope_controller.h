@@ -20,6 +20,8 @@ class QMenu;
 namespace app {
 
 class BodeView;
+class ScopeExport;
+class SpectrumView;
 class MainWindow;
 class ScopeView;
 class WatchView;
@@ -36,6 +38,7 @@ public:
     ScopeView* view() const { return m_view; }
     TuningPanel* tuningPanel() const { return m_tuning; }
     const std::optional<scope::Capture>& lastCapture() const { return m_last; }
+    ScopeExport* exporter() const { return m_export; } // whole record or visible range (Export Range)
 
     void fromDrive();                                    // the RECORD set-up dialog, then record()
     void record(const serialport::Bds5RecordPlan& plan); // RECORD + trigger + PLAY, shown when done
@@ -43,7 +46,7 @@ public:
     void openFromDisk();
     bool loadCsv(const QString& path);
     void saveCsvAs();
-    bool saveCsv(const QString& path);
+    bool saveCsv(const QString& path); // the whole record or the visible range, as exporter() says
     QDialog* viewData(); // non-modal table of the last capture; nullptr when there is none
     void printPlot();
     void exportPlot(); // PDF, PNG or SVG by the chosen file's suffix
@@ -52,6 +55,9 @@ public:
     // each new one while open.
     BodeView* frequencyResponse();
     WatchView* watchVariables(); // the polled rolling chart (one window, reused)
+    // Spectrum of a channel of the last capture (recorded, opened or a tuning run) over the one before it. It
+    // follows every capture, also while closed, so the overlay is there when it opens.
+    SpectrumView* spectrum();
 
 signals:
     void captureShown(const scope::Capture& capture);
@@ -72,7 +78,9 @@ private:
     std::optional<scope::Capture> m_last;
     std::optional<scope::Capture> m_lastVelocity; // the last with VCMD and VFB, for the Bode view
     QPointer<BodeView> m_bode;
+    SpectrumView* m_spectrum;
     QPointer<WatchView> m_watch;
+    ScopeExport* m_export = nullptr;
 };
 
 } // namespace app

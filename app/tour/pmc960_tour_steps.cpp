@@ -10,7 +10,7 @@
 #include "errors/error_log_dock.h"
 #include "errors/error_log_model.h"
 #include "editor/program_editor.h"
-#include "pmc960/mpl_language.h"
+#include "editor/mpl_language.h"
 #include "pmc960/pmc960_parameter_dock.h"
 #include "pmc960/pmc960_program_transfer.h"
 #include "pmc960/pmc960_status_dock.h"
@@ -79,15 +79,15 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          if (!*demo) return;
                          (*demo)->setFocus();
                          (*demo)->setCursorPosition(6, 0); // I4000+,
-                         if (auto* language = MplLanguage::of(*demo)) language->showHelpAtCursor();
+                         if (auto* language = editor::MplLanguage::of(*demo)) language->showHelpAtCursor();
                      },
                      .ready = [demo] {
-                         auto* language = *demo ? MplLanguage::of(*demo) : nullptr;
+                         auto* language = *demo ? editor::MplLanguage::of(*demo) : nullptr;
                          return language && language->helpPopup()->isVisible();
                      },
                      .grab = [&window] { return TourShot::withPopups(&window); }, // with the help it waits for
                      .cleanUp = [demo] {
-                         if (auto* language = *demo ? MplLanguage::of(*demo) : nullptr) language->hideHelp();
+                         if (auto* language = *demo ? editor::MplLanguage::of(*demo) : nullptr) language->hideHelp();
                      }});
     auto settle = std::make_shared<int>(0); // polls to wait after an index was sent before judging it
     steps.push_back({.name = QStringLiteral("pmc960-status"),

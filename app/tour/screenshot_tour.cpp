@@ -12,6 +12,9 @@
 #include "terminal_widget.h"
 #include "transfer_tour_steps.h"
 #include "scope_tour_steps.h"
+#include "spectrum_tour_steps.h"
+#include "math_trigger_tour_steps.h"
+#include "cursors_xy_tour_steps.h"
 #include "sc750_tour_steps.h"
 #include "pmc960_tour_steps.h"
 #include "shot_facts.h"
@@ -91,6 +94,11 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     for (Step& step : editorTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : driveTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : scopeTourSteps(m_window)) steps.push_back(std::move(step));
+    // Before the spectrum's steps: they change the drive's loop (PL, LPF) and the step response is the last
+    // capture here.
+    for (Step& step : mathTriggerTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : spectrumTourSteps(m_window)) steps.push_back(std::move(step));
+    for (Step& step : cursorsXyTourSteps(m_window)) steps.push_back(std::move(step)); // after scope-math's viewAgain
     for (Step& step : docksTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : sc750TourSteps(m_window)) steps.push_back(std::move(step)); // last: it switches family
     for (Step& step : pmc960TourSteps(m_window)) steps.push_back(std::move(step)); // switches family too

@@ -26,6 +26,17 @@ constexpr std::string_view kErrorPreamble = "\r\n\n";
 // The dedicated inputs (L820-836).
 constexpr std::array<std::string_view, 7> kDedicatedInputs{"REMOTE", "HOME", "CYCLE", "LIMIT",
                                                            "MOTION", "GATE", "MANUAL"};
+
+// How many leading bytes are printable (space to '~'): typed text, which handleText takes as one run.
+// No coverage callbacks: one comparison a typed byte, and handleByte keeps every other character's path
+// (not inlined: coverage is added after inlining, and would reach the loop in step()).
+[[gnu::noinline]] SERVODESK_NO_COVERAGE std::size_t textRun(std::string_view bytes) {
+    std::size_t n = 0;
+    while (n < bytes.size() && static_cast<unsigned char>(bytes[n]) >= 0x20 &&
+           static_cast<unsigned char>(bytes[n]) < 0x7f)
+        ++n;
+    return n;
+}
 } // namespace
 
 Bds5Drive::Bds5Drive() {
@@ -127,7 +138,18 @@ void Bds5Drive::step(Microseconds dt) {
     if (m_port.watchdogExpired(m_time, m_state.variables.read(watch) != 0, m_state.variables.readUser(wtime)))
         raiseFault(105);
     // Taken in place, so the buffer keeps its room from step to step (nothing handleByte does receives).
-    for (const char c : m_received) handleByte(c);
+    // Runs of typed characters go in one piece (a flood was a UART write and a coverage-traced pass through
+    // handleByte per character, issue 20); what the port or the line discipline acts on goes byte by byte.
+    const std::string_view received = m_received;
+    for (std::size_t i = 0; i < received.size();) {
+        const std::size_t run = m_port.passesText() ? textRun(received.substr(i)) : 0;
+        if (run == 0) {
+            handleByte(received[i++]);
+            continue;
+        }
+        handleText(received.substr(i, run));
+        i += run;
+    }
     m_received.clear();
     runServo(dt); // profile, loops, plant, faults and RECORD, every 1 ms (bds5_drive_servo.cpp)
     if (m_executor.running()) runProgram();
@@ -238,6 +260,20 @@ void Bds5Drive::handleByte(char c) {
     if (echo) transmit(std::string_view(&c, 1));
 }
 
+// A run of printable characters the port passes on (Bds5Port::passesText): exactly what handleByte does
+// with each of them in turn, but the line grows and the echo is written once. Nothing in the run changes the
+// mode, the ECHO switch or the port, so they are read once.
+void Bds5Drive::handleText(std::string_view text) {
+    if (m_mode == Bds5DriveMode::Running && !m_state.pendingInput) return;
+    const std::size_t room = m_line.size() < std::size_t(kMaxLineLength) ? kMaxLineLength - m_line.size() : 0;
+    const std::string_view kept = text.substr(0, room);
+    m_line.append(kept);
+    if (!kept.empty() && switchOn(Switch::Echo, true)) transmit(kept);
+    // Past 80 characters each one rings while the transmitter is idle: one bell, as a rate-limited port
+    // is busy once it holds it; an unlimited port (nothing queued) rings for every one.
+    for (std::size_t i = kept.size(); i < text.size() && !m_uart.busy(); ++i) transmit(std::string_view(&kBell, 1));
+}
+
 // Esc (§2.5): interactive — like CR; run — enter monitor mode; monitor — back to run; load — end of load.
 void Bds5Drive::handleEscape() {
     m_line.clear();
@@ -301,9 +337,12 @@ void Bds5Drive::handleBreakCharacter() {
 }
 
 void Bds5Drive::endOfLine() {
-    std::string line = std::exchange(m_line, {});
+    // The line moves to m_taken and the next one is typed into m_taken's old room.
+    m_taken.swap(m_line);
+    m_line.clear();
+    const std::string& line = m_taken;
     m_promptPending = false;
-    if (m_mode == Bds5DriveMode::ProgramLoad) return loadLine(std::move(line));
+    if (m_mode == Bds5DriveMode::ProgramLoad) return loadLine(line);
     if (m_mode == Bds5DriveMode::Editor) return editorReply(m_editor.line(line));
     if (m_mode == Bds5DriveMode::Running) return inputLine(line);
     if (!m_heldErrors.empty() || m_breakPending) {
@@ -323,16 +362,15 @@ void Bds5Drive::endOfLine() {
 }
 
 void Bds5Drive::interactiveLine(const std::string& line) {
-    auto lexed = lexLine(line);
-    if (auto* e = std::get_if<Bds5Error>(&lexed)) {
-        logError(m_state, e->code);
-        sendError(*e, kErrorPreamble);
+    // Lexed and answered into buffers kept from line to line: every typed line comes here.
+    if (const auto error = lexLine(line, m_lexed)) {
+        logError(m_state, error->code);
+        sendError(*error, kErrorPreamble);
         return sendPrompt();
     }
-    std::string out;
-    const Outcome outcome =
-        m_interpreter.execute(std::get<LexedLine>(lexed).entries, ExecContext{Origin::Terminal, 0}, out);
-    transmit(out);
+    m_answer.clear();
+    const Outcome outcome = m_interpreter.execute(m_lexed.entries, ExecContext{Origin::Terminal, 0}, m_answer);
+    transmit(m_answer);
     if (outcome.error) {
         logError(m_state, outcome.error->code);
         sendError(*outcome.error, kErrorPreamble);

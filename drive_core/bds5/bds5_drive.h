@@ -80,6 +80,7 @@ private:
     void masterInput();
     void homeAndCapture();
     void handleByte(char c);
+    void handleText(std::string_view text);
     void handleEscape();
     void handleBreakCharacter();
     void endOfLine();
@@ -117,6 +118,11 @@ private:
     std::string m_line;      // the instruction being typed
     std::string m_errorLine; // sendError's buffer, kept between lines
     std::vector<Bds5Error> m_heldErrors;
+    // Buffers kept between lines for their room (every typed line passes through them): the line endOfLine
+    // works on (it swaps with m_line), and interactiveLine's entries and answer.
+    std::string m_taken;
+    LexedLine m_lexed;
+    std::string m_answer;
     bool m_promptPending = false;
     bool m_breakPending = false; // the program stopped while the monitor prompt was up
     bool m_stepGranted = false;  // single-step: Enter lets the shown line run

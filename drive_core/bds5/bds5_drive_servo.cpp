@@ -17,14 +17,18 @@ namespace {
 constexpr Microseconds kServoPeriod{1000};
 constexpr double kBasicPerCps = 65.536;
 
+// The variables the servo period reads and writes, resolved once to their slots.
+using Slot = Bds5VariableStore::Slot;
 struct ChainRefs {
-    cat::VariableRef remote, motion, limit, ready, active, status, statmode, fault, ok2en, pcmd, vcmd, pext, vext, home;
-    cat::VariableRef cap, capdir, pcap, trip, trip1, trip2, ptrip1, ptrip2, pfb, clamp, peclamp, pe, extloop;
-    cat::VariableRef plim, pmax, pmin;
+    Slot remote, motion, limit, ready, active, status, statmode, fault, ok2en, pcmd, vcmd, pext, vext, home;
+    Slot cap, capdir, pcap, trip, trip1, trip2, ptrip1, ptrip2, pfb, clamp, peclamp, pe, extloop;
+    Slot plim, pmax, pmin;
 };
 const ChainRefs& chainRefs() {
     static const ChainRefs r = [] {
-        const auto f = [](const char* name) { return cat::findVariable(name).value_or(cat::VariableRef{}); };
+        const auto f = [](const char* name) {
+            return Bds5VariableStore::slotOf(cat::findVariable(name).value_or(cat::VariableRef{}));
+        };
         return ChainRefs{f("REMOTE"),   f("MOTION"), f("LIMIT"),   f("READY"),  f("ACTIVE"), f("STATUS"),
                          f("STATMODE"), f("FAULT"),  f("OK2EN"),   f("PCMD"),   f("VCMD"),   f("PEXT"),
                          f("VEXT"),     f("HOME"),   f("CAP"),     f("CAPDIR"), f("PCAP"),   f("TRIP"),
@@ -33,11 +37,11 @@ const ChainRefs& chainRefs() {
     }();
     return r;
 }
-bool on(const Bds5VariableStore& vars, const cat::VariableRef& ref, bool fallback) {
-    return ref.info ? vars.read(ref) != 0 : fallback;
+bool on(const Bds5VariableStore& vars, Slot ref, bool fallback) {
+    return ref.valid() ? vars.read(ref) != 0 : fallback;
 }
-void put(Bds5VariableStore& vars, const cat::VariableRef& ref, std::int64_t value) {
-    if (ref.info) vars.set(ref, std::int32_t(value));
+void put(Bds5VariableStore& vars, Slot ref, std::int64_t value) {
+    if (ref.valid()) vars.set(ref, std::int32_t(value));
 }
 } // namespace
 
@@ -171,7 +175,7 @@ void Bds5Drive::masterInput() {
     // A sum within a hair of a whole count is that count (the wave's integral is exact only to rounding).
     const double whole = std::floor(m_masterFraction + 1e-9);
     m_masterFraction -= whole;
-    if (r.pext.info)
+    if (r.pext.valid())
         m_state.variables.set(r.pext, std::int32_t(std::int64_t(m_state.variables.read(r.pext)) + std::int64_t(whole)));
     put(m_state.variables, r.vext, std::llround(counts * 1e3 * kBasicPerCps));
 }

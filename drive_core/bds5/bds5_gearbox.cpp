@@ -15,10 +15,10 @@ constexpr double kMaxRate_countsPerMs = 2000; // 2 MHz after the ratio (ERR 97, 
 constexpr double kBasicPerCps2 = 0.065536; // basic acceleration: 1/65536 count per ms²
 
 struct Refs {
-    cat::VariableRef gear, geari, gearo, voff, pext, ramp, pl, acc, dec;
+    Bds5VariableStore::Slot gear, geari, gearo, voff, pext, ramp, pl, acc, dec; // read every millisecond
 };
 const Refs& refs() {
-    const auto f = [](const char* name) { return *cat::findVariable(name); };
+    const auto f = [](const char* name) { return Bds5VariableStore::slotOf(*cat::findVariable(name)); };
     static const Refs r{f("GEAR"), f("GEARI"), f("GEARO"), f("VOFF"), f("PEXT"),
                         f("RAMP"), f("PL"),    f("ACC"),   f("DEC")};
     return r;

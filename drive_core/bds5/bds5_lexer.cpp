@@ -20,9 +20,16 @@ std::string upper(std::string_view s) {
 }
 } // namespace
 
-// line := { blank } [ entry { blank+ entry } ] [ blank ';' comment ] | ';' comment
 std::variant<LexedLine, Bds5Error> lexLine(std::string_view line) {
     LexedLine out;
+    if (auto error = lexLine(line, out)) return std::move(*error);
+    return out;
+}
+
+// line := { blank } [ entry { blank+ entry } ] [ blank ';' comment ] | ';' comment
+std::optional<Bds5Error> lexLine(std::string_view line, LexedLine& out) {
+    out.entries.clear();
+    out.comment.clear();
     const int quotes = int(std::count(line.begin(), line.end(), '"'));
     // Room for a word and three parameters in one allocation (every typed line is lexed, issue 20).
     if (const std::size_t first = line.find_first_not_of(" \t"); first != std::string_view::npos && line[first] != ';')
@@ -34,7 +41,7 @@ std::variant<LexedLine, Bds5Error> lexLine(std::string_view line) {
             continue;
         }
         if (line[i] == ';') { // first character, or preceded by a blank: a comment to the end of the line
-            out.comment = std::string(line.substr(i + 1));
+            out.comment.assign(line.substr(i + 1));
             break;
         }
         const std::size_t start = i;
@@ -58,7 +65,7 @@ std::variant<LexedLine, Bds5Error> lexLine(std::string_view line) {
         }
         out.entries.push_back({upper(line.substr(start, i - start)), int(start), false});
     }
-    return out;
+    return std::nullopt;
 }
 
 } // namespace drive_core::bds5

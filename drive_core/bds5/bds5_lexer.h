@@ -4,6 +4,7 @@
 
 #include "bds5_error.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -27,5 +28,8 @@ constexpr int kMaxEntries = 15;    // entries per instruction, command included 
 
 // Returns the entries, or the drive's error for quote damage (ERR 87, ERR 88).
 std::variant<LexedLine, Bds5Error> lexLine(std::string_view line);
+// The same into `out`, whose room is reused (the drive lexes every typed line into one buffer); out is
+// unspecified after an error.
+std::optional<Bds5Error> lexLine(std::string_view line, LexedLine& out);
 
 } // namespace drive_core::bds5

@@ -24,13 +24,12 @@ double basic(const Bds5VariableStore& vars, const char* name) {
 // The variables step() reads and writes every millisecond, resolved once. step() and writeVariables() are
 // part of the servo tick, which the fuzz build leaves without coverage callbacks (tests/fuzz).
 struct StepRefs {
-    cat::VariableRef gate, gatemode, plim, pfb, pmax, pmin, pcam, pcmd, vcmd, seg, pfnl, cam;
+    Bds5VariableStore::Slot gate, gatemode, plim, pfb, pmax, pmin, pcam, pcmd, vcmd, seg, pfnl, cam;
 };
 SERVODESK_NO_COVERAGE const StepRefs& stepRefs() {
-    static const StepRefs r{*cat::findVariable("GATE"), *cat::findVariable("GATEMODE"), *cat::findVariable("PLIM"),
-                            *cat::findVariable("PFB"),  *cat::findVariable("PMAX"),     *cat::findVariable("PMIN"),
-                            *cat::findVariable("PCAM"), *cat::findVariable("PCMD"),     *cat::findVariable("VCMD"),
-                            *cat::findVariable("SEG"),  *cat::findVariable("PFNL"),     *cat::findVariable("CAM")};
+    const auto f = [](const char* name) { return Bds5VariableStore::slotOf(*cat::findVariable(name)); };
+    static const StepRefs r{f("GATE"), f("GATEMODE"), f("PLIM"), f("PFB"), f("PMAX"), f("PMIN"),
+                            f("PCAM"), f("PCMD"),     f("VCMD"), f("SEG"), f("PFNL"), f("CAM")};
     return r;
 }
 

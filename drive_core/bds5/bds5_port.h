@@ -28,6 +28,9 @@ public:
     Verdict accept(char c, Microseconds now);
 
     bool autobauding() const { return m_autobaud; }
+    // Every byte but CR goes to the line discipline unchanged (single-drop, not autobauding): the drive
+    // may take a run of typed characters at once.
+    bool passesText() const { return !m_autobaud && !m_axis; }
     // Whether what the drive sends reaches the wire: not while asleep or addressed by broadcast.
     bool transmits() const { return !m_asleep && !m_broadcast && !m_autobaud; }
     std::optional<char> axisId() const { return m_axis; }

@@ -11,11 +11,11 @@ namespace {
 constexpr std::int64_t kMaxBackward_counts = 30000; // ERR 64 beyond (L7334)
 
 struct Refs {
-    catalog::bds5::VariableRef reg, regkhz, pext;
+    Bds5VariableStore::Slot reg, regkhz, pext; // read every millisecond
 };
 const Refs& refs() {
-    static const Refs r{*catalog::bds5::findVariable("REG"), *catalog::bds5::findVariable("REGKHZ"),
-                        *catalog::bds5::findVariable("PEXT")};
+    const auto f = [](const char* name) { return Bds5VariableStore::slotOf(*catalog::bds5::findVariable(name)); };
+    static const Refs r{f("REG"), f("REGKHZ"), f("PEXT")};
     return r;
 }
 } // namespace

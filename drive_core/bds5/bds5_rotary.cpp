@@ -9,11 +9,11 @@ namespace cat = catalog::bds5;
 
 namespace {
 struct Refs {
-    cat::VariableRef rotary, protary, pnum, pden;
+    Bds5VariableStore::Slot rotary, protary, pnum, pden; // read every millisecond
 };
 const Refs& refs() {
-    static const Refs r{*cat::findVariable("ROTARY"), *cat::findVariable("PROTARY"), *cat::findVariable("PNUM"),
-                        *cat::findVariable("PDEN")};
+    const auto f = [](const char* name) { return Bds5VariableStore::slotOf(*cat::findVariable(name)); };
+    static const Refs r{f("ROTARY"), f("PROTARY"), f("PNUM"), f("PDEN")};
     return r;
 }
 

@@ -19,14 +19,17 @@ constexpr double kFoldHigh = 1.5;       // IFOLD "well above IMAX" at rest and w
 constexpr double kCountsPerRad = kCountsPerRev / (2 * std::numbers::pi);
 constexpr double kRadPerCount = 1 / kCountsPerRad;
 
-// The variables the loop reads and writes every millisecond, resolved once.
+// The variables the loop reads and writes every millisecond, resolved once to their slots.
+using Slot = Bds5VariableStore::Slot;
 struct Refs {
-    cat::VariableRef kp, kf, kv, kvi, kprop, pl, prop, tq, lpf, lpfhz, ilim, icont, pemax, vospd, foldt, foldr;
-    cat::VariableRef pfb, prd, pe, vfb, vavg, ve, icmd, imon, ifold, sat, fold;
+    Slot kp, kf, kv, kvi, kprop, pl, prop, tq, lpf, lpfhz, ilim, icont, pemax, vospd, foldt, foldr;
+    Slot pfb, prd, pe, vfb, vavg, ve, icmd, imon, ifold, sat, fold;
 };
 const Refs& refs() {
     static const Refs r = [] {
-        const auto f = [](const char* name) { return cat::findVariable(name).value_or(cat::VariableRef{}); };
+        const auto f = [](const char* name) {
+            return Bds5VariableStore::slotOf(cat::findVariable(name).value_or(cat::VariableRef{}));
+        };
         return Refs{f("KP"),    f("KF"),    f("KV"),    f("KVI"),   f("KPROP"), f("PL"),    f("PROP"),
                     f("TQ"),    f("LPF"),   f("LPFHZ"), f("ILIM"),  f("ICONT"), f("PEMAX"), f("VOSPD"),
                     f("FOLDT"), f("FOLDR"), f("PFB"),   f("PRD"),   f("PE"),    f("VFB"),   f("VAVG"),
@@ -34,11 +37,11 @@ const Refs& refs() {
     }();
     return r;
 }
-double get(const Bds5VariableStore& vars, const cat::VariableRef& ref) {
-    return ref.info ? double(vars.read(ref)) : 0.0;
+double get(const Bds5VariableStore& vars, Slot ref) {
+    return ref.valid() ? double(vars.read(ref)) : 0.0;
 }
-void put(Bds5VariableStore& vars, const cat::VariableRef& ref, double value) {
-    if (ref.info) vars.set(ref, std::int32_t(std::lrint(std::clamp(value, double(INT32_MIN), double(INT32_MAX)))));
+void put(Bds5VariableStore& vars, Slot ref, double value) {
+    if (ref.valid()) vars.set(ref, std::int32_t(std::lrint(std::clamp(value, double(INT32_MIN), double(INT32_MAX)))));
 }
 } // namespace
 

@@ -52,6 +52,16 @@ void Bds5SimulatorControls::setLoadInertia_kgm2(double inertia_kgm2) {
     m_drive.m_state.servo.setLoad(load);
 }
 
+// A compliant coupling makes the load a second mass on a spring (DECISIONS.md, bench): the two-mass plant
+// whose resonance tuning has to find. Negative values are taken as 0 (rigid; no damping).
+bool Bds5SimulatorControls::setLoadCoupling(double stiffness_NmPerRad, double damping_NmPerRadPerS) {
+    physics::LoadParameters load = m_drive.m_state.servo.plant().load();
+    load.couplingStiffness_NmPerRad = std::max(stiffness_NmPerRad, 0.0);
+    load.couplingDamping_NmPerRadPerS = std::max(damping_NmPerRadPerS, 0.0);
+    m_drive.m_state.servo.setLoad(load);
+    return true;
+}
+
 void Bds5SimulatorControls::setMasterFrequency_Hz(double countsPerSecond) {
     m_drive.m_bench.master.setFrequency_Hz(countsPerSecond);
 }
@@ -96,6 +106,9 @@ SimulatorStatus Bds5SimulatorControls::status() const {
     s.current_a = plant.current_A();
     s.loadTorque_Nm = plant.load().externalTorque_Nm;
     s.loadInertia_kgm2 = plant.load().inertia_kgm2;
+    s.couplingStiffness_NmPerRad = plant.load().couplingStiffness_NmPerRad;
+    s.couplingDamping_NmPerRadPerS = plant.load().couplingDamping_NmPerRadPerS;
+    s.resonance_Hz = plant.resonance_Hz();
     s.masterFrequency_Hz = m_drive.m_bench.master.frequency_Hz();
     s.masterWave = m_drive.m_bench.master.wave();
     s.motorName = m_motorName;

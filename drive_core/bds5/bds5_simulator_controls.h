@@ -22,6 +22,7 @@ public:
     void setLimitSwitches(bool positiveTripped, bool negativeTripped) override;
     void setLoadTorque_Nm(double torque_Nm) override;
     void setLoadInertia_kgm2(double inertia_kgm2) override;
+    bool setLoadCoupling(double stiffness_NmPerRad, double damping_NmPerRadPerS) override;
     void setMasterFrequency_Hz(double countsPerSecond) override;
     bool setMasterWave(const MasterWave& wave) override;
     bool selectMotor(std::string_view name) override;

@@ -2,7 +2,6 @@
 #include "bds5_uart.h"
 
 #include <algorithm>
-#include <utility>
 
 namespace drive_core::bds5 {
 
@@ -64,8 +63,12 @@ void Bds5Uart::discard() {
     m_atLineStart = m_sent.empty() || m_sent.back() == '\n';
 }
 
+// A copy, so m_sent keeps its room: the drive is read after every step, and a buffer handed out each time
+// grew again from nothing (issue 20).
 std::string Bds5Uart::takeSent() {
-    return std::exchange(m_sent, {});
+    std::string sent = m_sent;
+    m_sent.clear();
+    return sent;
 }
 
 } // namespace drive_core::bds5

@@ -47,6 +47,12 @@ Bds5VariableStore::Bds5VariableStore()
     : m_base(cat::variables().data()), m_inWord(layout().inWord), m_outWord(layout().outWord),
       m_slotBase(layout().slotBase.data()), m_values(layout().initial) {}
 
+Bds5VariableStore::Slot Bds5VariableStore::slotOf(const cat::VariableRef& ref) {
+    const Layout& l = layout();
+    if (!ref.info || ref.info == l.inWord || ref.info == l.outWord) return {};
+    return {std::size_t(l.slotBase[std::size_t(ref.info - cat::variables().data())] + ref.index)};
+}
+
 void Bds5VariableStore::powerUp() {
     const auto vars = cat::variables();
     for (std::size_t i = 0; i < vars.size(); ++i) {

@@ -5,6 +5,7 @@
 
 #include "drive_core/catalog/bds5_catalog.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -52,6 +53,18 @@ public:
     // zero — the manual is silent). nullopt on overflow or a zero denominator.
     std::optional<std::int64_t> toBasic(catalog::bds5::UnitClass unit, std::int64_t user) const;
     std::optional<std::int64_t> toUser(catalog::bds5::UnitClass unit, std::int64_t basic) const;
+
+    // A plain variable's place in the value memory, resolved once for code that reads and writes it every
+    // millisecond (the servo tick): no name, no catalog arithmetic, no IN/OUT word. The layout is the same
+    // for every drive, so a Slot found once serves all. Invalid for IN and OUT and for a ref without info.
+    struct Slot {
+        std::size_t at = SIZE_MAX;
+        bool valid() const { return at != SIZE_MAX; }
+    };
+    static Slot slotOf(const catalog::bds5::VariableRef& ref);
+    // In basic units, as read(ref) and set(ref, value); the slot must be valid.
+    SERVODESK_NO_COVERAGE std::int32_t read(Slot s) const { return m_values[s.at]; }
+    SERVODESK_NO_COVERAGE void set(Slot s, std::int32_t value) { m_values[s.at] = value; }
 
     // Unchecked write, for the drive's own bookkeeping (monitor variables it maintains, CLEARX, EXTDX).
     SERVODESK_NO_COVERAGE void set(const catalog::bds5::VariableRef& ref, std::int32_t value) {

@@ -89,6 +89,10 @@ void Plant::step(double dt_s, double currentCommand_A) {
         const double next = command + (m_current_A - command) * decay;
         const double mean = command + (m_current_A - command) * meanFactor;
         const State k1 = derivative(m_x, mean);
+        if ((k1.array() == 0.0).all()) { // at rest and held there (friction): every slope is 0, m_x stays
+            m_current_A = next;
+            continue;
+        }
         const State k2 = derivative(m_x + 0.5 * h * k1, mean);
         const State k3 = derivative(m_x + 0.5 * h * k2, mean);
         const State k4 = derivative(m_x + h * k3, mean);

@@ -9,7 +9,7 @@
 #include "app/errors/error_log_dock.h"
 #include "app/errors/error_source.h"
 #include "app/main_window.h"
-#include "app/pmc960/mpl_language.h"
+#include "editor/mpl_language.h"
 #include "app/pmc960/pmc960_parameter_dock.h"
 #include "app/pmc960/pmc960_program_transfer.h"
 #include "app/pmc960/pmc960_routine_runner.h"
@@ -134,7 +134,7 @@ private slots:
         const QString program = example("14-loop-reset-program-G-W.mpl");
         QVERIFY(!program.isEmpty());
         newMplTab(window, QStringLiteral("loop.mpl"), program);
-        QVERIFY(app::MplLanguage::of(window.editor())); // .mpl: the MPL lexer
+        QVERIFY(editor::MplLanguage::of(window.editor())); // .mpl: the MPL lexer
         QSignalSpy downloaded(&ws.transfer(), &app::Pmc960ProgramTransfer::downloadFinished);
         ws.action(QStringLiteral("Download Program"))->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(downloaded.count(), 1, kTimeoutMs);
@@ -151,7 +151,7 @@ private slots:
         QVERIFY(tab);
         QCOMPARE(tab->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts),
                  serialport::Pmc960Download::programLines(program));
-        QVERIFY(app::MplLanguage::of(tab));
+        QVERIFY(editor::MplLanguage::of(tab));
     }
 
     void aProgramTooBigGetsTheControllersErrorAndLine() {
@@ -478,7 +478,7 @@ private slots:
         file.write("@T\nI+,\nLT9\nE\n");
         file.close();
         QVERIFY(window.editorArea()->documents()->openFile(path));
-        auto* language = app::MplLanguage::of(window.editor());
+        auto* language = editor::MplLanguage::of(window.editor());
         QVERIFY(language);
         QVERIFY(qobject_cast<editor::MplLexer*>(window.editor()->lexer()));
         window.editor()->setCursorPosition(2, 0);

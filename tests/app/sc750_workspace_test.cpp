@@ -11,11 +11,12 @@
 #include "app/sc750/sc750_setup_dialog.h"
 #include "app/sc750/sc750_variables_dock.h"
 #include "app/sc750/sc750_workspace.h"
-#include "app/sc750/servobasic_language.h"
-#include "app/sc750/servobasic_lexer.h"
 
 #include "editor/help_popup.h"
 #include "editor/program_editor.h"
+#include "editor/servobasic_help.h"
+#include "editor/servobasic_language.h"
+#include "editor/servobasic_lexer.h"
 
 #include <QAction>
 #include <QClipboard>
@@ -398,28 +399,28 @@ private slots:
         menu->uploadSource();
         QTRY_VERIFY_WITH_TIMEOUT(window.editor() != first, kTimeoutMs);
         QCOMPARE(window.editor()->text(), program);
-        QVERIFY(app::ServoBasicLanguage::of(*window.editor())); // a .bas tab
+        QVERIFY(editor::ServoBasicLanguage::of(window.editor())); // a .bas tab
     }
 
     void servoBasicEditing() {
-        QCOMPARE(app::servoBasicWordStyle("go.vel"), app::BasicKeyword);
-        QCOMPARE(app::servoBasicWordStyle("RUN.SPEED"), app::BasicVariable);
-        QCOMPARE(app::servoBasicWordStyle("Loop_Again"), app::BasicDefault);
-        const QByteArray styles = app::styleServoBasicLine("Loop_Again: PRINT \"x\" ' note");
-        QCOMPARE(styles[0], char(app::BasicLabel));
-        QCOMPARE(styles[12], char(app::BasicKeyword));
-        QCOMPARE(styles[18], char(app::BasicString));
-        QCOMPARE(styles[styles.size() - 1], char(app::BasicComment));
-        QVERIFY(app::ServoBasicLanguage::helpHtml(QStringLiteral("GO.VEL")).contains(QStringLiteral("GO.VEL")));
+        QCOMPARE(editor::servoBasicWordStyle("go.vel"), editor::BasicKeyword);
+        QCOMPARE(editor::servoBasicWordStyle("RUN.SPEED"), editor::BasicVariable);
+        QCOMPARE(editor::servoBasicWordStyle("Loop_Again"), editor::BasicDefault);
+        const QByteArray styles = editor::styleServoBasicLine("Loop_Again: PRINT \"x\" ' note");
+        QCOMPARE(styles[0], char(editor::BasicLabel));
+        QCOMPARE(styles[12], char(editor::BasicKeyword));
+        QCOMPARE(styles[18], char(editor::BasicString));
+        QCOMPARE(styles[styles.size() - 1], char(editor::BasicComment));
+        QVERIFY(editor::servoBasicHelpHtml(QStringLiteral("GO.VEL")).contains(QStringLiteral("GO.VEL")));
 
         MainWindow window;
         window.show();
         Sc750Workspace& ws = connectSc750(window);
         QVERIFY(window.editor()->text().contains(QStringLiteral("PARAMS START")));
         QVERIFY(ws.debugger().compile()); // the boiler-plate compiles as it is
-        auto* language = app::ServoBasicLanguage::of(*window.editor());
+        auto* language = editor::ServoBasicLanguage::of(window.editor());
         QVERIFY(language);
-        QVERIFY(qobject_cast<app::ServoBasicLexer*>(window.editor()->lexer()));
+        QVERIFY(qobject_cast<editor::ServoBasicLexer*>(window.editor()->lexer()));
         window.editor()->setText(QStringLiteral("GO.VEL\n"));
         window.editor()->setCursorPosition(0, 3);
         QCOMPARE(language->showHelpAtCursor(), QStringLiteral("GO.VEL"));
@@ -427,7 +428,7 @@ private slots:
         // Completion from the catalog: "GO.V" offers GO.VEL.
         window.editor()->setText(QStringLiteral("go.v"));
         window.editor()->setCursorPosition(0, 4);
-        QVERIFY(language->showCompletions());
+        QVERIFY(language->showCompletions(true));
         QVERIFY(window.editor()->isListActive());
         window.editor()->SendScintilla(QsciScintilla::SCI_AUTOCCOMPLETE);
         QCOMPARE(window.editor()->text(), QStringLiteral("GO.VEL"));

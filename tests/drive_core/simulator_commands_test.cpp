@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 using namespace bds5_test;
@@ -173,4 +174,25 @@ TEST(SimulatorCommands, MalformedLinesAnswerError) {
     EXPECT_EQ(run(t, "master-wave sine 1000"), "ERROR wrong number of arguments for master-wave");
     EXPECT_EQ(run(t, "master-wave on"), "ERROR expected master-wave off or a shape, amplitude and frequency");
     EXPECT_EQ(value(t, "I1"), "0");
+}
+
+// A compliant coupling (DECISIONS.md 19): the status shows the two-mass resonance of the closed form
+// f = sqrt(K (1/Jm + 1/Jl)) / 2 pi with the bench's motor and load; off makes the load rigid again.
+TEST(SimulatorCommands, LoadCouplingMakesATwoMassLoadWithItsResonance) {
+    TestDrive t;
+    EXPECT_EQ(run(t, "load-inertia 0.0003"), "OK");
+    EXPECT_EQ(run(t, "load-coupling 60 0.002"), "OK");
+    const std::string status = run(t, "status");
+    EXPECT_NE(status.find(" coupling_nm_per_rad=60 coupling_nms_per_rad=0.002 "), std::string::npos) << status;
+    const double jm = 1.5e-4; // REF-MEDIUM, the bench's motor at power-up
+    const double expected = std::sqrt(60 * (1 / jm + 1 / 0.0003)) / (2 * std::numbers::pi);
+    const auto at = status.find(" resonance_hz=");
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_NEAR(std::stod(status.substr(at + 14)), expected, 1e-3 * expected);
+    EXPECT_EQ(run(t, "load-coupling off"), "OK");
+    EXPECT_NE(run(t, "status").find(" coupling_nm_per_rad=0 coupling_nms_per_rad=0 resonance_hz=0 "),
+              std::string::npos);
+    EXPECT_EQ(run(t, "load-coupling -1 0"), "ERROR stiffness and damping must not be negative");
+    EXPECT_EQ(run(t, "load-coupling 60"), "ERROR expected load-coupling off or a stiffness and a damping");
+    EXPECT_EQ(run(t, "load-coupling"), "ERROR wrong number of arguments for load-coupling");
 }

@@ -35,10 +35,10 @@
 // (the 81st rings), 15 entries an instruction, 20 entries of ERR HIST, 30 macro segments, and 128 and
 // more repeats of a short line (the coverage counters' top bucket). Beyond any flood the harness allows,
 // 4 KB included: 16,000 characters of program memory (the input and its floods stay under 8 KB) and the
-// transmitter's 4 KB compaction (250 ms carry at most 480 characters at 19200 baud); the 10 MB sessions
-// without a CR are replayed from corpus/bds5-long. The harness reads the transmitter's backlog instead
-// of letting it drain, and a program that outruns the line shows itself in that backlog within the time
-// the input gives it.
+// transmitter's 4 KB compaction (250 ms carry at most 480 characters at 19200 baud). The replay runs every
+// input under the same budget, corpus/bds5-long's too: its sessions without a CR reach the drive as their
+// first KB of flood. The harness reads the transmitter's backlog instead of letting it drain, and a
+// program that outruns the line shows itself in that backlog within the time the input gives it.
 
 namespace {
 

@@ -123,6 +123,24 @@ TEST(Spectrum, LargeOffsetDoesNotHideTheTonePeak) {
     EXPECT_NEAR(s.magnitude_db[0], db(1000.0), 1e-6);
 }
 
+// A loud low tone and a quiet high one: the plain peak is the low one, the peak searched from a frequency
+// between them is the high one, refined like the plain peak; past Nyquist there is none.
+TEST(Spectrum, PeakFromAFrequencySkipsWhatLiesBelowIt) {
+    const double fs = 1000;
+    std::vector<double> v = sine(1.0, 12.3, fs, 2000);
+    const std::vector<double> high = sine(0.01, 171.7, fs, 2000);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] += high[i];
+    const Spectrum s = computeSpectrum(v, 1 / fs, {SpectrumWindow::Hann});
+    ASSERT_TRUE(s.ok() && s.peak);
+    EXPECT_NEAR(s.peak->frequency_hz, 12.3, s.resolution_hz);
+    const auto above = scope::findPeakFrom(s, 50);
+    ASSERT_TRUE(above);
+    EXPECT_NEAR(above->frequency_hz, 171.7, 0.1 * s.resolution_hz);
+    EXPECT_NEAR(above->interpolated_db, db(0.01), 0.5);
+    EXPECT_EQ(scope::findPeakFrom(s, 0)->bin, s.peak->bin);
+    EXPECT_FALSE(scope::findPeakFrom(s, 600));
+}
+
 TEST(Spectrum, RefusesWhatHasNoSpectrum) {
     EXPECT_EQ(computeSpectrum(std::vector<double>{1, 2, 3}, 0.001).status, Spectrum::Status::TooShort);
     EXPECT_EQ(computeSpectrum(std::vector<double>(8, 1.0), 0).status, Spectrum::Status::BadInterval);

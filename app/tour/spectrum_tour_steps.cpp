@@ -1,0 +1,93 @@
+// Spectrum tour steps: two tuning runs on a two-mass bench, before and after the low-pass filter, as a user
+// makes them (bench fields, gain editors, Run Once), then the Spectrum view grabbed.
+#include "spectrum_tour_steps.h"
+
+#include "drive_connection.h"
+#include "io/io_panel.h"
+#include "main_window.h"
+#include "scope/gain_editor.h"
+#include "scope/scope_controller.h"
+#include "scope/spectrum_view.h"
+#include "scope/tuning_panel.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+
+#include <memory>
+
+namespace app {
+
+namespace {
+// The bench of tests/app/spectrum_test.cpp: a load as heavy as the rotor on a spring, resonance 250 Hz, which
+// the velocity loop at its power-up gains makes ring.
+constexpr double kLoadInertia_kgm2 = 1.5e-4;
+constexpr double kStiffness_NmPerRad = 185;
+constexpr double kDamping_NmsPerRad = 0.007;
+constexpr int kLpfHz = 62;        // a quarter of the resonance
+constexpr int kPeakFrom_hz = 100; // above the loop's bandwidth
+} // namespace
+
+std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
+    ScopeController& scope = window.scopeController();
+    TuningPanel* panel = scope.tuningPanel();
+    auto runsBefore = std::make_shared<qsizetype>(0);
+    auto runDone = [panel, runsBefore](qsizetype more) {
+        return [panel, runsBefore, more] {
+            return panel->runner().runs().size() >= *runsBefore + more && !panel->runner().isRunning();
+        };
+    };
+    std::vector<ScreenshotTour::Step> steps;
+    steps.push_back({.name = QStringLiteral("spectrum-run-1"),
+                     .act =
+                         [&window, panel, runsBefore] {
+                             *runsBefore = panel->runner().runs().size();
+                             IoPanel& bench = *window.ioPanel();
+                             bench.loadInertiaField()->setValue(kLoadInertia_kgm2);
+                             bench.couplingStiffnessField()->setValue(kStiffness_NmPerRad);
+                             bench.couplingDampingField()->setValue(kDamping_NmsPerRad);
+                             // The velocity loop alone at its power-up gains, driven by a true step held for the
+                             // record (as scope-bode).
+                             panel->runner().setGain(QStringLiteral("KV"), 2000);
+                             panel->runner().setGain(QStringLiteral("PLIM"), 0);
+                             panel->runner().setGain(QStringLiteral("PL"), 0);
+                             for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
+                                 window.connection().sendCommand(QString::fromLatin1(line));
+                             TestMove move;
+                             move.kind = TestMove::Kind::FrequencyStep;
+                             move.amplitude = 300;
+                             move.durationMs = 400;
+                             panel->setTestMove(move);
+                             panel->runner().runOnce();
+                         },
+                     .ready = runDone(1)});
+    auto view = std::make_shared<QPointer<SpectrumView>>();
+    steps.push_back({.name = QStringLiteral("spectrum"),
+                     .act =
+                         [panel] {
+                             panel->gainEditor(QStringLiteral("LPFHZ"))->spinBox()->setValue(kLpfHz);
+                             panel->gainEditor(QStringLiteral("LPF"))->findChild<QCheckBox*>()->setChecked(true);
+                             panel->runner().runOnce();
+                         },
+                     .ready =
+                         [&scope, view, done = runDone(2)] {
+                             if (!done()) return false;
+                             if (!*view) {
+                                 *view = scope.spectrum();
+                                 (*view)->setPeakFrom(kPeakFrom_hz);
+                             }
+                             return (*view)->isVisible() && (*view)->overlay().has_value();
+                         },
+                     .grab = [view] { return TourShot::of(*view); },
+                     .text = [view] { return (*view)->readout(); },
+                     .cleanUp =
+                         [&window, panel, view] {
+                             if (*view) (*view)->close();
+                             panel->gainEditor(QStringLiteral("LPF"))->findChild<QCheckBox*>()->setChecked(false);
+                             window.ioPanel()->couplingStiffnessField()->setValue(0); // rigid again
+                             window.connection().sendCommand(QStringLiteral("DIS"));
+                         }});
+    return steps;
+}
+
+} // namespace app
