@@ -37,9 +37,11 @@ void send(MainWindow& window, std::initializer_list<const char*> lines) {
     for (const char* line : lines) window.connection().sendCommand(QString::fromLatin1(line));
 }
 
+// Floated before it is shown: shown docked first, a tall dock raises the main window's minimum height and the
+// window grows (to 813 px once, and every later shot of it with it).
 void floatDock(QDockWidget* dock, QSize size) {
-    dock->show();
     dock->setFloating(true);
+    dock->show();
     dock->resize(size);
     dock->raise();
 }

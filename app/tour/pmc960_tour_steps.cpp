@@ -94,8 +94,8 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                      .act = [&window, settle] {
                          *settle = 40;
                          Pmc960StatusDock* status = pmc960(window)->statusDock();
+                         status->setFloating(true); // before show(): docked first, it would grow the main window
                          status->show();
-                         status->setFloating(true);
                          status->resize(420, 560);
                          status->sendCommand(QStringLiteral("SM2"));
                          status->sendCommand(QStringLiteral("OB5:F"));
@@ -118,12 +118,14 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                                 status->value(QStringLiteral("outputs")) == QLatin1String("0005");
                      },
                      .grab = [&window] { return TourShot::of(pmc960(window)->statusDock()); },
-                     .cleanUp = [&window] { pmc960(window)->statusDock()->setFloating(false); }});
+                     // No clean-up: left floating, as docked beside the parameter table it would make the main window
+                     // taller than 800 px, and the later shots read its polls.
+                 });
     steps.push_back({.name = QStringLiteral("pmc960-parameters"),
                      .act = [&window] {
                          Pmc960ParameterDock* table = pmc960(window)->parameterDock();
+                         table->setFloating(true); // before show(): docked first, it would grow the main window
                          table->show();
-                         table->setFloating(true);
                          table->resize(760, 600);
                          table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("24"));
                      },
@@ -132,7 +134,11 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          return table->pendingReads() == 0 && table->stored(QStringLiteral("TGP")) == QLatin1String("24");
                      },
                      .grab = [&window] { return TourShot::of(pmc960(window)->parameterDock()); },
-                     .cleanUp = [&window] { pmc960(window)->parameterDock()->setFloating(false); }});
+                     .cleanUp = [&window] {
+                         Pmc960ParameterDock* table = pmc960(window)->parameterDock();
+                         table->hide(); // hidden first: docked while shown, it would grow the main window
+                         table->setFloating(false);
+                     }});
     // Watch Variables on the PMC-960: position and following error from status polls during an index.
     auto watch = std::make_shared<QPointer<WatchView>>();
     auto indexed = std::make_shared<bool>(false);
@@ -164,8 +170,8 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
     steps.push_back({.name = QStringLiteral("error-log-pmc960"),
                      .act = [&window] {
                          ErrorLogDock* errors = window.errorLogDock();
+                         errors->setFloating(true); // before show(): docked first, it would grow the main window
                          errors->show();
-                         errors->setFloating(true);
                          errors->resize(1100, 300);
                          errors->raise();
                          Pmc960StatusDock* status = pmc960(window)->statusDock();
