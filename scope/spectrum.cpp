@@ -18,6 +18,8 @@ constexpr double kFloorPower = 1e-30;         // amplitude 1e-15: the -300 dB fl
 constexpr double kInterpolationRange_db = 60; // neighbours further below the peak: a lone bin
 constexpr double kEvenTolerance = 1e-6;       // of the median interval: evenly spaced
 constexpr double kGapFactor = 1.5;            // an interval over 1.5 x the median is a gap
+constexpr double kProminence_db = 6;          // findProminentPeak: less above its surroundings is no peak
+constexpr std::size_t kProminenceSmoothing = 5; // bins averaged (in power) before judging a peak
 
 std::string seconds(double s) {
     std::ostringstream out;
@@ -65,19 +67,16 @@ std::size_t firstPeakBin(const Spectrum& s) {
     return s.window == SpectrumWindow::Rectangular ? 1 : 2;
 }
 
-// The largest bin from `first` up to Nyquist, refined as the header says; unset when first lies past Nyquist.
-std::optional<SpectrumPeak> largestFrom(const Spectrum& s, std::size_t first) {
-    if (s.magnitude_db.empty()) return std::nullopt;
+// The peak at `bin` (> 0), refined as the header says.
+SpectrumPeak peakAt(const Spectrum& s, std::size_t bin) {
     const std::size_t last = s.magnitude_db.size() - 1;
-    if (first > last) return std::nullopt;
-    const auto top = std::max_element(s.magnitude_db.begin() + std::ptrdiff_t(first), s.magnitude_db.end());
     SpectrumPeak p;
-    p.bin = std::size_t(top - s.magnitude_db.begin());
+    p.bin = bin;
     p.binFrequency_hz = s.frequencyAt(p.bin);
     p.frequency_hz = p.binFrequency_hz;
-    p.magnitude_db = p.interpolated_db = *top;
+    p.magnitude_db = p.interpolated_db = s.magnitude_db[bin];
     if (p.bin + 1 <= last) {
-        const double alpha = s.magnitude_db[p.bin - 1], beta = *top, gamma = s.magnitude_db[p.bin + 1];
+        const double alpha = s.magnitude_db[p.bin - 1], beta = p.magnitude_db, gamma = s.magnitude_db[p.bin + 1];
         if (alpha >= beta - kInterpolationRange_db && gamma >= beta - kInterpolationRange_db) {
             const double curvature = alpha - 2 * beta + gamma; // < 0: beta is the largest of the three
             const double delta = curvature < 0 ? std::clamp(0.5 * (alpha - gamma) / curvature, -0.5, 0.5) : 0.0;
@@ -86,6 +85,13 @@ std::optional<SpectrumPeak> largestFrom(const Spectrum& s, std::size_t first) {
         }
     }
     return p;
+}
+
+// The largest bin from `first` up to Nyquist; unset when first lies past Nyquist.
+std::optional<SpectrumPeak> largestFrom(const Spectrum& s, std::size_t first) {
+    if (s.magnitude_db.empty() || first > s.magnitude_db.size() - 1) return std::nullopt;
+    const auto top = std::max_element(s.magnitude_db.begin() + std::ptrdiff_t(first), s.magnitude_db.end());
+    return peakAt(s, std::size_t(top - s.magnitude_db.begin()));
 }
 
 void findPeak(Spectrum& s) {
@@ -211,6 +217,38 @@ Spectrum computeSpectrum(const Channel& channel, const SpectrumOptions& options)
     Spectrum result = computeSpectrum(values, interval, options, channel.unit);
     result.resampled = !even;
     return result;
+}
+
+std::optional<SpectrumPeak> findProminentPeak(const Spectrum& s) {
+    if (!s.ok() || s.magnitude_db.empty()) return std::nullopt;
+    const std::size_t first = firstPeakBin(s), last = s.magnitude_db.size() - 1;
+    constexpr std::size_t h = kProminenceSmoothing / 2;
+    if (first + 2 * h + 2 > last) return largestFrom(s, first);
+    // Power prefix sums in long double: a step's 1/f content spans 10^11 in power over 500,000 bins.
+    std::vector<long double> prefix(s.magnitude_db.size() + 1, 0.0L);
+    for (std::size_t k = 0; k <= last; ++k)
+        prefix[k + 1] = prefix[k] + (k < first ? 0.0L : std::pow(10.0L, (long double)s.magnitude_db[k] / 10));
+    auto meanDb = [&prefix](std::size_t from, std::size_t to) { // bins from..to, both included
+        const long double mean = (prefix[to + 1] - prefix[from]) / (long double)(to + 1 - from);
+        return mean > 0 ? double(10 * std::log10(mean)) : kFloor_db;
+    };
+    auto smoothed = [&](std::size_t k) { return meanDb(k - h, k + h); };
+    std::optional<std::size_t> best;
+    double bestHeight = kProminence_db;
+    for (std::size_t k = first + h + 1; k + h + 1 <= last; ++k) {
+        const double v = smoothed(k);
+        if (v < smoothed(k - 1) || v < smoothed(k + 1)) continue; // not a local maximum
+        const auto from = std::max(first, std::size_t(std::ceil(double(k) / std::numbers::sqrt2)));
+        const auto to = std::min(last, std::max(k + 1, std::size_t(double(k) * std::numbers::sqrt2)));
+        const double height = v - meanDb(from, to);
+        if (height > bestHeight) {
+            bestHeight = height;
+            best = k;
+        }
+    }
+    if (!best) return largestFrom(s, first);
+    const auto around = s.magnitude_db.begin() + std::ptrdiff_t(*best - h);
+    return peakAt(s, std::size_t(std::max_element(around, around + 2 * h + 1) - s.magnitude_db.begin()));
 }
 
 } // namespace scope

@@ -81,5 +81,12 @@ Spectrum computeSpectrum(const Channel& channel, const SpectrumOptions& options 
 // resonance above a loop's bandwidth, where a step's own 1/f content would otherwise be the largest. Unset
 // when the spectrum is not Ok or from_hz lies past Nyquist.
 std::optional<SpectrumPeak> findPeakFrom(const Spectrum& spectrum, double from_hz);
+// The peak that stands highest above its surroundings (the spectrum view's default): on the spectrum averaged
+// over 5 bins (in power), the local maximum outside DC's main lobe that stands furthest above the mean power
+// of the bins within half an octave either side of it; reported at the largest bin of its 5. A resonance
+// stands out; a step's 1/f content falls steadily and stands above nothing; the average of 5 noise bins
+// seldom stands 6 dB above its neighbourhood. When nothing stands 6 dB or more above its surroundings, the
+// largest peak (as Spectrum::peak). Unset when the spectrum is not Ok. Linear in the number of bins.
+std::optional<SpectrumPeak> findProminentPeak(const Spectrum& spectrum);
 
 } // namespace scope

@@ -93,6 +93,8 @@ ScopeController::ScopeController(MainWindow& window)
     m_menu->addAction(terminalTabAction(m_window, m_window.terminalDock(), m_tuningDock, tr("&Tuning Panel"), this));
     connect(this, &ScopeController::captureShown, this, &ScopeController::keepForBode);
     connect(this, &ScopeController::captureShown, m_spectrum, &SpectrumView::showCapture);
+    m_spectrum->setDerivedChannels([this](const scope::Capture& c) { return m_view->withMath(c); });
+    connect(m_view, &ScopeView::mathChannelsChanged, m_spectrum, &SpectrumView::refresh);
     connect(&m_tuning->runner(), &TuningRunner::runFinished, m_spectrum,
             [this](const TuningRun& run) { m_spectrum->showCapture(run.capture); });
     connect(&m_tuning->runner(), &TuningRunner::runFinished, this,

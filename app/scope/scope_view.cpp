@@ -133,6 +133,7 @@ void ScopeView::reshowWithMath() {
     m_xy->showCapture(shown.capture);
     m_measurements->showMeasurements(shown.capture);
     rebuildMathMenu();
+    emit mathChannelsChanged();
 }
 
 void ScopeView::rebuildMathMenu() {

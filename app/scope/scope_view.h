@@ -45,6 +45,9 @@ public:
     // capture with the math channels appended, as the plot shows it (for the .CSV and the data table).
     scope::Capture withMath(const scope::Capture& capture) const;
 
+signals:
+    void mathChannelsChanged(); // one was added or removed (the spectrum offers them too)
+
 private:
     void rebuildOverlayMenu();
     void rebuildMathMenu();

@@ -60,9 +60,10 @@ SpectrumView::SpectrumView(QWidget* parent)
     m_peakFrom->setObjectName(QStringLiteral("spectrumPeakFrom"));
     m_peakFrom->setRange(0, 100000);
     m_peakFrom->setSuffix(tr(" Hz"));
-    m_peakFrom->setSpecialValueText(tr("anywhere"));
-    m_peakFrom->setToolTip(tr("Search the peak only above this frequency. A step's own content is largest at the "
-                              "lowest frequencies: to find a resonance, search above the loop's bandwidth."));
+    m_peakFrom->setSpecialValueText(tr("auto"));
+    m_peakFrom->setToolTip(tr("auto: the peak that stands furthest above its surroundings (half an octave either "
+                              "side): a resonance, not a step's own content, which is largest at the lowest "
+                              "frequencies. A frequency: the largest peak above it."));
     auto* peakLabel = new QLabel(tr("&Peak above"), this);
     peakLabel->setBuddy(m_peakFrom);
     auto* choices = new QHBoxLayout;
@@ -121,9 +122,24 @@ SpectrumView::SpectrumView(QWidget* parent)
 }
 
 void SpectrumView::showCapture(const scope::Capture& capture) {
-    if (m_capture) m_previous = std::move(m_capture);
-    m_capture = capture;
-    fillChannels();
+    if (m_raw) m_previousRaw = std::move(m_raw);
+    m_raw = capture;
+    refresh();
+}
+
+void SpectrumView::setDerivedChannels(std::function<scope::Capture(const scope::Capture&)> derive) {
+    m_derive = std::move(derive);
+    refresh();
+}
+
+void SpectrumView::refresh() {
+    auto derived = [this](const std::optional<scope::Capture>& raw) -> std::optional<scope::Capture> {
+        if (!raw) return std::nullopt;
+        return m_derive ? m_derive(*raw) : *raw;
+    };
+    m_capture = derived(m_raw);
+    m_previous = derived(m_previousRaw);
+    if (m_capture) fillChannels();
     recompute();
 }
 
@@ -178,8 +194,11 @@ void SpectrumView::recompute() {
         if (m_previous)
             if (auto s = analyse(*m_previous); s && s->ok()) m_overlay = std::move(*s);
     }
-    m_peakShown = scope::findPeakFrom(m_spectrum, m_peakFrom->value());
-    if (m_overlay) m_overlayPeak = scope::findPeakFrom(*m_overlay, m_peakFrom->value());
+    auto peakOf = [this](const scope::Spectrum& s) {
+        return m_peakFrom->value() > 0 ? scope::findPeakFrom(s, m_peakFrom->value()) : scope::findProminentPeak(s);
+    };
+    m_peakShown = peakOf(m_spectrum);
+    if (m_overlay) m_overlayPeak = peakOf(*m_overlay);
     m_readout->setText(describe());
     if (isVisible()) replot();
 }

@@ -10,6 +10,7 @@
 
 #include <QDialog>
 
+#include <functional>
 #include <optional>
 
 class QCPGraph;
@@ -31,15 +32,19 @@ public:
     // A new capture to analyse; the one shown so far becomes the overlay. The channel stays if the new capture
     // has one of that name, else the feedback (VFB, PFB) or the first. Replots only while visible.
     void showCapture(const scope::Capture& capture);
+    // The channels offered besides the captured ones (the Scope's math channels): applied to this capture and
+    // to the previous one whenever either is analysed; refresh() after the math channels change.
+    void setDerivedChannels(std::function<scope::Capture(const scope::Capture&)> derive);
+    void refresh();
     void setChannel(const QString& name);
     void setWindow(scope::SpectrumWindow window);
     void setLogFrequency(bool log);
-    // Where the peak is searched from (Hz; 0: everywhere outside DC). A step's own content falls as 1/f and is
-    // the largest at the lowest bins: a resonance above the loop's bandwidth is found by searching above it.
+    // Where the peak is searched from (Hz). 0, "auto" (the default): scope::findProminentPeak, the peak that
+    // stands out of its surroundings, so a resonance is found without knowing the loop's bandwidth.
     void setPeakFrom(int from_hz);
 
     const scope::Spectrum& spectrum() const { return m_spectrum; }
-    // The peak marked and read out (scope::findPeakFrom of the "Peak above" field); unset when there is none.
+    // The peak marked and read out (by the "Peak above" field, as setPeakFrom says); unset when there is none.
     const std::optional<scope::SpectrumPeak>& peak() const { return m_peakShown; }
     // The previous capture's spectrum of the same channel under the same window; unset when there is none.
     const std::optional<scope::Spectrum>& overlay() const { return m_overlay; }
@@ -63,8 +68,10 @@ private:
     void markPeaks();
     QString describe() const;
 
-    std::optional<scope::Capture> m_capture;
+    std::optional<scope::Capture> m_raw, m_previousRaw; // as captured
+    std::optional<scope::Capture> m_capture;             // with the derived channels: what is analysed
     std::optional<scope::Capture> m_previous;
+    std::function<scope::Capture(const scope::Capture&)> m_derive;
     scope::Spectrum m_spectrum;
     std::optional<scope::Spectrum> m_overlay;
     std::optional<scope::SpectrumPeak> m_peakShown;

@@ -18,13 +18,29 @@
 #include "editor/program_editor.h"
 
 #include <QAction>
+#include <QPlainTextEdit>
 #include <QPointer>
+#include <QScrollBar>
+#include <QTextBlock>
+#include <QTextDocument>
 
+#include <algorithm>
 #include <memory>
 
 namespace app {
 
 namespace {
+
+// Scrolls the capture's text so that the last line holding `text` is the lowest line in sight.
+void scrollToLast(CaptureDock& dock, const QString& text) {
+    auto* edit = dock.findChild<QPlainTextEdit*>(QStringLiteral("captureText"));
+    if (!edit) return;
+    const QTextCursor found = edit->document()->find(text, edit->document()->characterCount(),
+                                                     QTextDocument::FindBackward);
+    if (found.isNull()) return;
+    const int lines = std::max(1, edit->viewport()->height() / edit->fontMetrics().lineSpacing());
+    edit->verticalScrollBar()->setValue(std::max(0, found.blockNumber() - lines + 1));
+}
 // The manual's nested IF (L4074-4088) and a loop to trace.
 const QStringList kProgram{
     QStringLiteral("; NESTED.BDS - the manual's nested IF (L4074-4088), and a loop to trace"),
@@ -138,7 +154,13 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
                              return driveReady(window) && window.captureDock()->isVisible() &&
                                     window.captureDock()->shownText().contains(QStringLiteral("<^X>"));
                          },
-                     .grab = [&window] { return TourShot::of(window.captureDock()); },
+                     .grab =
+                         [&window] {
+                             // The drive's last trace lines may still arrive after ^X and scroll it out of
+                             // sight (a loaded machine): the shot shows the ^X line at the foot of the view.
+                             scrollToLast(*window.captureDock(), QStringLiteral("<^X>"));
+                             return TourShot::of(window.captureDock());
+                         },
                      .text = [&window] { return window.captureDock()->shownText(); },
                      .cleanUp =
                          [&window] {

@@ -25,7 +25,6 @@ constexpr double kLoadInertia_kgm2 = 1.5e-4;
 constexpr double kStiffness_NmPerRad = 185;
 constexpr double kDamping_NmsPerRad = 0.007;
 constexpr int kLpfHz = 62;        // a quarter of the resonance
-constexpr int kPeakFrom_hz = 100; // above the loop's bandwidth
 } // namespace
 
 std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
@@ -72,10 +71,7 @@ std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
                      .ready =
                          [&scope, view, done = runDone(2)] {
                              if (!done()) return false;
-                             if (!*view) {
-                                 *view = scope.spectrum();
-                                 (*view)->setPeakFrom(kPeakFrom_hz);
-                             }
+                             if (!*view) *view = scope.spectrum(); // "Peak above: auto" finds the resonance
                              return (*view)->isVisible() && (*view)->overlay().has_value();
                          },
                      .grab = [view] { return TourShot::of(*view); },

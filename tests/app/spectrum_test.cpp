@@ -7,11 +7,14 @@
 #include "app/io/io_panel.h"
 #include "app/scope/gain_editor.h"
 #include "app/scope/scope_controller.h"
+#include "app/scope/scope_view.h"
 #include "app/scope/spectrum_view.h"
 #include "app/scope/tuning_panel.h"
 #include "app_test_support.h"
 
 #include "drive_core/physics/motor_parameters.h"
+#include "scope/capture_csv.h"
+#include "scope/math_channel.h"
 
 #include <qcustomplot.h>
 
@@ -21,6 +24,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -113,8 +117,8 @@ private slots:
         QVERIFY(view->isVisible());
         QCOMPARE(view->channelBox()->currentText(), QStringLiteral("VFB"));
         QCOMPARE(view->windowBox()->currentText(), QStringLiteral("Hann"));
-        // Above the loop's bandwidth, where the step's own content no longer hides a resonance.
-        view->peakFromBox()->setValue(100);
+        // "Peak above: auto" by default: the peak that stands out of its surroundings (scope::findProminentPeak).
+        QCOMPARE(view->peakFromBox()->text(), QStringLiteral("auto"));
         QVERIFY2(view->spectrum().ok() && view->peak(), qPrintable(view->readout()));
         const double peak_hz = view->peak()->frequency_hz;
         qInfo("closed-form resonance %.1f Hz; spectrum peak %.1f Hz (%.1f dB); %s", resonance_hz, peak_hz,
@@ -125,8 +129,14 @@ private slots:
         // against the damping that makes it ring. Without the coupling there is no peak here at all.
         QVERIFY2(std::abs(peak_hz - resonance_hz) <= 0.1 * resonance_hz,
                  qPrintable(QStringLiteral("peak %1 Hz, resonance %2 Hz").arg(peak_hz).arg(resonance_hz)));
-        QVERIFY2(view->readout().contains(QStringLiteral("Peak above 100 Hz: %1 Hz").arg(peak_hz, 0, 'f', 1)),
+        QVERIFY2(view->readout().contains(QStringLiteral("Peak: %1 Hz").arg(peak_hz, 0, 'f', 1)),
                  qPrintable(view->readout()));
+        // A frequency chosen by hand searches above it: the same resonance, said so.
+        view->peakFromBox()->setValue(100);
+        QVERIFY2(view->peak() && view->peak()->frequency_hz == peak_hz &&
+                     view->readout().contains(QStringLiteral("Peak above 100 Hz: %1 Hz").arg(peak_hz, 0, 'f', 1)),
+                 qPrintable(view->readout()));
+        view->peakFromBox()->setValue(0);
         QVERIFY(!view->overlay());
 
         // The remedy, as a user sets it in the tuning panel: LPF on, LPFHZ a quarter of the resonance.
@@ -188,6 +198,39 @@ private slots:
         QVERIFY(view.overlay());
         QVERIFY(view.plot()->graph(1)->visible());
         QVERIFY2(view.readout().contains(QStringLiteral("6.0 dB lower now")), qPrintable(view.readout()));
+    }
+
+    // A math channel of the Scope is a channel of the spectrum too: 2·VFB reads 6 dB above VFB at its peak, and
+    // it leaves the list when the user removes it.
+    void mathChannelsAreSpectrumSources() {
+        MainWindow window;
+        app::ScopeController& scope = window.scopeController();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("tone.csv"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly) &&
+                file.write(QByteArray::fromStdString(scope::writeCsv(sine(50, 101.25, "tone")))) > 0);
+        file.close();
+        QVERIFY(scope.loadCsv(path));
+        app::SpectrumView* view = scope.spectrum();
+        QCOMPARE(view->channelBox()->currentText(), QStringLiteral("VFB"));
+        const double vfb_db = view->peak()->interpolated_db;
+
+        scope::MathChannelSpec doubled;
+        doubled.op = scope::MathOp::Scale;
+        doubled.a = "VFB";
+        doubled.k = 2;
+        doubled.name = "2*VFB";
+        QVERIFY(scope.view()->addMathChannel(doubled));
+        QVERIFY(view->channelBox()->findText(QStringLiteral("2*VFB")) >= 0);
+        view->setChannel(QStringLiteral("2*VFB"));
+        QVERIFY2(view->spectrum().ok() && view->peak(), qPrintable(view->readout()));
+        QVERIFY2(std::abs(view->peak()->interpolated_db - vfb_db - 20 * std::log10(2.0)) < 0.01,
+                 qPrintable(view->readout()));
+
+        QVERIFY(scope.view()->removeMathChannel(QStringLiteral("2*VFB")));
+        QCOMPARE(view->channelBox()->findText(QStringLiteral("2*VFB")), -1);
+        QCOMPARE(view->channelBox()->currentText(), QStringLiteral("VFB"));
     }
 };
 

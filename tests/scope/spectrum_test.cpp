@@ -141,6 +141,38 @@ TEST(Spectrum, PeakFromAFrequencySkipsWhatLiesBelowIt) {
     EXPECT_FALSE(scope::findPeakFrom(s, 600));
 }
 
+// A servo's velocity step with a lightly damped mechanical mode: the step's own content is largest at low
+// frequency, the resonance stands out of its surroundings; encoder-like noise rides on both.
+TEST(Spectrum, ProminentPeakOfAStepIsItsResonanceNotItsLowFrequencyContent) {
+    const double fs = 4000, f = 263.7;
+    const std::size_t n = 4096;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
+    std::vector<double> v(n);
+    for (std::size_t i = 0; i < n; ++i) { // the step at 0.1 s of the 1.024 s record
+        const double t = double(i) / fs - 0.1;
+        v[i] = noise(random) +
+               (t < 0 ? 0 : 1 - std::exp(-t / 0.02) + 0.003 * std::exp(-t / 0.05) * std::sin(2 * kPi * f * t));
+    }
+    const Spectrum s = computeSpectrum(v, 1 / fs, {SpectrumWindow::Hann});
+    ASSERT_TRUE(s.ok() && s.peak);
+    EXPECT_LT(s.peak->frequency_hz, 10.0); // the largest bin is the step's
+    const auto prominent = scope::findProminentPeak(s);
+    ASSERT_TRUE(prominent);
+    EXPECT_NEAR(prominent->frequency_hz, f, s.resolution_hz);
+}
+
+TEST(Spectrum, ProminentPeakOfNoiseAloneIsTheLargestBin) {
+    std::mt19937 random(11);
+    std::normal_distribution<double> noise(0, 1);
+    std::vector<double> v(4096);
+    for (double& x : v) x = noise(random);
+    const Spectrum s = computeSpectrum(v, 1e-3, {SpectrumWindow::Hann});
+    ASSERT_TRUE(s.ok() && s.peak);
+    EXPECT_EQ(scope::findProminentPeak(s)->bin, s.peak->bin);
+    EXPECT_FALSE(scope::findProminentPeak(computeSpectrum(std::vector<double>{1, 2}, 1e-3)));
+}
+
 TEST(Spectrum, RefusesWhatHasNoSpectrum) {
     EXPECT_EQ(computeSpectrum(std::vector<double>{1, 2, 3}, 0.001).status, Spectrum::Status::TooShort);
     EXPECT_EQ(computeSpectrum(std::vector<double>(8, 1.0), 0).status, Spectrum::Status::BadInterval);
