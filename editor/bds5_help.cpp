@@ -2,6 +2,8 @@
 // same topic names through ProgramEditor::helpRequested).
 #include "bds5_help.h"
 
+#include "parameter_help.h"
+
 #include "bds5_line_styler.h"
 
 #include "drive_core/catalog/bds5_catalog.h"
@@ -73,65 +75,6 @@ QString commandHtml(const cat::CommandInfo& c) {
     return html + QStringLiteral("<p style=\"margin:0\">%1</p>").arg(muted(facts));
 }
 
-QString writeText(cat::WriteCondition w) {
-    switch (w) {
-    case cat::WriteCondition::Always: return QStringLiteral("any time");
-    case cat::WriteCondition::Disabled: return QStringLiteral("only with the drive disabled");
-    case cat::WriteCondition::NoMotion: return QStringLiteral("only without commanded motion");
-    case cat::WriteCondition::Never: return QStringLiteral("read-only (monitor)");
-    case cat::WriteCondition::Factory: return QStringLiteral("factory-protected");
-    }
-    return {};
-}
-
-QString variableHtml(const cat::VariableInfo& v) {
-    QString name = v.firstIndex > 0 ? QStringLiteral("%1%2..%1%3").arg(esc(v.name)).arg(v.firstIndex).arg(v.lastIndex)
-                                    : esc(v.name);
-    if (v.extendedLastIndex > v.lastIndex) // v3: X251..X750 while EXTDX is on
-        name += QStringLiteral(", %1%2..%1%3 with %4 on")
-                    .arg(esc(v.name))
-                    .arg(v.lastIndex + 1)
-                    .arg(v.extendedLastIndex)
-                    .arg(esc(v.extendedBy));
-    QString html = QStringLiteral("<p style=\"margin:0\"><b>%1</b> &nbsp;%2</p>")
-                       .arg(name, muted(v.isSwitch ? QStringLiteral("switch") : QStringLiteral("variable")));
-    QStringList facts;
-    if (!v.units.empty()) facts << QStringLiteral("Units: %1").arg(esc(v.units));
-    if (v.isSwitch || v.limits == cat::LimitClass::Switch)
-        facts << QStringLiteral("ON/OFF");
-    else if (v.limits != cat::LimitClass::None)
-        facts << QStringLiteral("Range: %1 .. %2").arg(cat::minimumOf(v)).arg(cat::maximumOf(v));
-    facts << QStringLiteral("Write: %1").arg(writeText(v.write));
-    if (v.write != cat::WriteCondition::Never)
-        facts << QStringLiteral("Power-up: %1%2")
-                     .arg(v.powerUpValue)
-                     .arg(v.persistence == cat::Persistence::Remembered ? QStringLiteral(" (remembered)") : QString());
-    html += QStringLiteral("<p style=\"margin:4px 0\">%1</p>").arg(facts.join(QStringLiteral(" &middot; ")));
-    html += QStringLiteral("<p style=\"margin:4px 0\">%1</p>").arg(esc(v.description));
-    return html + QStringLiteral("<p style=\"margin:0\">%1</p>")
-                      .arg(muted(QStringLiteral("Manual %1").arg(esc(v.manualLines))));
-}
-
-QString severityText(cat::Severity s) {
-    switch (s) {
-    case cat::Severity::HistoryOnly: return QStringLiteral("logged in ERR HIST only");
-    case cat::Severity::Warning: return QStringLiteral("message only");
-    case cat::Severity::Break: return QStringLiteral("breaks the program and stops motion");
-    case cat::Severity::Disable: return QStringLiteral("breaks the program and disables the drive");
-    case cat::Severity::Firmware: return QStringLiteral("firmware error: CPU LED blinks");
-    }
-    return {};
-}
-
-QString errorHtml(const cat::ErrorInfo& e) {
-    QString html = QStringLiteral("<p style=\"margin:0\"><b>ERR %1</b> &nbsp;<b>%2</b> &nbsp;%3</p>")
-                       .arg(e.code)
-                       .arg(esc(e.message), muted(severityText(e.severity)));
-    html += QStringLiteral("<p style=\"margin:4px 0\">%1</p>").arg(esc(e.meaning));
-    if (!e.remedy.empty()) html += QStringLiteral("<p style=\"margin:4px 0\"><i>Remedy:</i> %1</p>").arg(esc(e.remedy));
-    return html + QStringLiteral("<p style=\"margin:0\">%1</p>")
-                      .arg(muted(QStringLiteral("Manual %1").arg(esc(e.manualLines))));
-}
 
 QString conditionHtml(const QString& word) {
     static const QStringList kWords{"GT", "GE", "LT", "LE", "EQ", "NE"};
@@ -184,14 +127,16 @@ QString bds5HelpHtml(const QString& topic) {
     QString t = topic.trimmed().toUpper();
     if (t.startsWith(QLatin1String("ERR ")) || isNumber(t)) {
         const int code = t.section(QLatin1Char(' '), -1).toInt();
-        const cat::ErrorInfo* e = cat::findError(code);
-        return e ? errorHtml(*e) : QString();
+        const auto* e = drive_core::catalog::findError(drive_core::DriveFamily::Bds5, code);
+        return e ? errorHelpHtml(*e, QStringLiteral("ERR ")) : QString();
     }
     if (const QString condition = conditionHtml(t); !condition.isEmpty()) return condition;
     const std::string name = t.toStdString();
     QStringList sections;
     if (const cat::CommandInfo* c = cat::findCommand(name)) sections << commandHtml(*c);
-    if (const auto v = cat::findVariable(name)) sections << variableHtml(*v->info);
+    if (const auto v = cat::findVariable(name))
+        if (const auto* p = parameterNamed(drive_core::DriveFamily::Bds5, v->info->name))
+            sections << parameterHelpHtml(*p);
     return sections.join(QStringLiteral("<hr>"));
 }
 

@@ -1,6 +1,8 @@
 // MPL F1 help: the MPL line styler finds where commands start; the catalog supplies the words.
 #include "mpl_help.h"
 
+#include "parameter_help.h"
+
 #include "drive_core/catalog/pmc960_catalog.h"
 #include "mpl_line_styler.h"
 
@@ -50,24 +52,16 @@ QString mplTopicAt(const QString& line, int column) {
 
 QString mplHelpHtml(const QString& topic) {
     if (topic.startsWith(QLatin1Char('#'))) {
-        const auto* e = cat::findError(topic.mid(1).toInt(nullptr, 16));
-        if (!e) return {};
-        return QStringLiteral("<b>#%1</b> %2<p>%3</p><p><i>Manual %4</i></p>")
-            .arg(topic.mid(1), text(e->message).toHtmlEscaped(), text(e->meaning).toHtmlEscaped(),
-                 text(e->manualLines));
+        const auto* e = drive_core::catalog::findError(drive_core::DriveFamily::Pmc960, topic.mid(1).toInt(nullptr, 16));
+        return e ? errorHelpHtml(*e) : QString();
     }
     const auto* c = cat::findCommand(topic.toStdString());
     if (!c) return {};
     QString html = QStringLiteral("<b>%1</b> — %2<br><code>%3</code><p>%4</p>")
                        .arg(text(c->name).toHtmlEscaped(), text(c->longName).toHtmlEscaped(),
                             text(c->syntax).toHtmlEscaped(), text(c->description).toHtmlEscaped());
-    if (const auto* p = cat::findParameter(topic.toStdString()))
-        html += QStringLiteral("<p>Range %1 to %2, %3 %4%5.</p>")
-                    .arg(p->minimum)
-                    .arg(p->maximum)
-                    .arg(p->nonVolatile ? QStringLiteral("factory value") : QStringLiteral("power-up value"))
-                    .arg(p->factory)
-                    .arg(p->nonVolatile ? QStringLiteral(" (parameter table, kept without power)") : QString());
+    if (const auto* p = parameterNamed(drive_core::DriveFamily::Pmc960, text(c->name).toStdString()))
+        html += QStringLiteral("<hr>") + parameterHelpHtml(*p);
     return html + QStringLiteral("<p><i>Manual %1</i></p>").arg(text(c->manualLines));
 }
 

@@ -1,6 +1,8 @@
 // ServoBASIC help: word finding, completion names and the catalog's entries as HTML.
 #include "servobasic_help.h"
 
+#include "parameter_help.h"
+
 #include "drive_core/catalog/sc750_catalog.h"
 
 namespace editor {
@@ -65,21 +67,8 @@ QString servoBasicHelpHtml(const QString& word) {
                    "<b>%1</b> (Function, %2)<br><b>Syntax:</b> <code>%3</code><br>%4<br><small>Manual %5</small>")
             .arg(str(f->name), typeName(f->result), str(f->syntax).toHtmlEscaped(), str(f->description).toHtmlEscaped(),
                  str(f->manualLines));
-    if (const auto* v = catalog::findVariable(name)) {
-        const QString kind = v->access == catalog::Access::Parameter  ? QStringLiteral("Parameter")
-                             : v->access == catalog::Access::ReadOnly ? QStringLiteral("Variable, read only")
-                                                                      : QStringLiteral("Variable");
-        QString html = QStringLiteral("<b>%1</b> (%2, %3)<br>%4")
-                           .arg(str(v->name), kind, typeName(v->type), str(v->description).toHtmlEscaped());
-        if (v->type != catalog::ValueType::String)
-            html += QStringLiteral("<br><b>Range:</b> %1 to %2 %3 &nbsp; <b>Default:</b> %4%5")
-                        .arg(v->minimum)
-                        .arg(v->maximum)
-                        .arg(str(v->units))
-                        .arg(v->defaultValue)
-                        .arg(v->chosen ? QStringLiteral(" <i>(chosen: the manual gives none)</i>") : QString());
-        return html + QStringLiteral("<br><small>Manual %1</small>").arg(str(v->manualLines));
-    }
+    if (const auto* v = catalog::findVariable(name))
+        if (const auto* p = parameterNamed(drive_core::DriveFamily::Sc750, v->name)) return parameterHelpHtml(*p);
     return {};
 }
 

@@ -1,12 +1,10 @@
 // Bds5ErrorText: a BDS5 error line ("ERR 92 LINE 3 'X1=5/X2' ZERO DIVIDE") as an error log row, with its
-// severity (App. D, Table D.1), the catalog's meaning and the manual's remedy. Pure; no I/O.
+// severity (App. D, Table D.1), the catalog's meaning and the manual's remedy (catalog_error_entry.h). Pure.
 #pragma once
 
 #include "error_log_model.h"
 
 #include "serialport/bds5_protocol.h"
-
-#include "drive_core/catalog/bds5_catalog.h"
 
 #include <QCoreApplication>
 
@@ -17,7 +15,6 @@ class Bds5ErrorText {
 
 public:
     static ErrorLogModel::Entry entry(const serialport::Bds5ErrorLine& error);
-    static QString severityName(drive_core::catalog::bds5::Severity severity);
     // The manual's remedy for ERR code, else its meaning.
     static QString fixHint(int code);
 };

@@ -1,6 +1,8 @@
 // Sc750ErrorText: SC750 faults, run-time and compile errors with the catalog's words and our hints.
 #include "sc750_error_text.h"
 
+#include "catalog_error_entry.h"
+
 #include "drive_core/catalog/sc750_catalog.h"
 
 #include <QRegularExpression>
@@ -14,14 +16,6 @@ namespace {
 QString text(std::string_view view) {
     return QString::fromLatin1(view.data(), qsizetype(view.size()));
 }
-
-// Memory and processor faults are the hardware's, not the program's or the machine's.
-Level levelOf(int code) {
-    if (Sc750ErrorText::isNoFault(code)) return Level::Info;
-    if (code == 14 || code == 242 || code == 243) return Level::Firmware;
-    if (code == cat::kFaultRunTime || code == cat::kFaultIncompatible) return Level::Error;
-    return Level::Fault;
-}
 } // namespace
 
 bool Sc750ErrorText::isNoFault(int faultCode) {
@@ -29,45 +23,7 @@ bool Sc750ErrorText::isNoFault(int faultCode) {
 }
 
 QString Sc750ErrorText::faultHint(int faultCode) {
-    switch (faultCode) {
-    case 0: return tr("Set ENABLE = 1 and assert the ENABLE input (J53-4) to enable the amplifier (L1496-L1520).");
-    case 1:
-        return tr("The motor ran faster than the resolver allows: lower the commanded speed or the gains that "
-                  "overshoot, check the resolver wiring.");
-    case 2: return tr("Let the motor cool; check its load, duty cycle and thermostat wiring.");
-    case 3:
-        return tr("Let the controller cool; check its ventilation and the ambient temperature, lower the duty cycle.");
-    case 4: return tr("The I\u00b7t protection tripped: lower the RMS current (accelerations, load, duty cycle).");
-    case 5: return tr("Check the motor cable for a short between phases or to ground.");
-    case 6: return tr("Check the control supply voltage.");
-    case 7: return tr("Check the bus supply and the motor cable; a load that regenerates may need a shunt regulator.");
-    case 8: return tr("No fault: the amplifier is enabled.");
-    case 9:
-        return tr(
-            "The load returns more energy than the shunt regulator can take: lower DECEL.RATE or fit a larger shunt.");
-    case 10: return tr("Check the bus supply voltage and the control supply.");
-    case 11: return tr("Check the encoder's +5 V wiring and what it draws.");
-    case 12: return tr("Check what the terminal +5 V powers and its wiring.");
-    case 13: return tr("Check the control supply; if the fault stays, the power stage needs service.");
-    case 14: return tr("Cycle the power; if the fault stays, the controller needs service.");
-    case 241:
-        return tr("The motor could not follow the profile: lower ACCEL.RATE, DECEL.RATE or the speed, check the load "
-                  "and the velocity loop gains.");
-    case 242:
-        return tr("Download the program again (Compile > Run Program); if the fault comes back, the program memory is "
-                  "failing.");
-    case 243:
-        return tr("Set the parameters again (Controller > Edit Parameters, Controller Set Up) and check them after a "
-                  "power cycle.");
-    case 244: return tr("The program stopped at the line shown: correct it and run again (Reset Program clears F 4).");
-    case 245:
-        return tr(
-            "Check the PacLAN cabling and that every axis the program addresses is on the network (L2285, L2360).");
-    case 246:
-        return tr("The .BIN came from another Motion Dialogue version: compile the program with this one and download "
-                  "it again (L1554, L1585).");
-    default: return tr("Not in the SC750's fault table.");
-    }
+    return catalogErrorHint(drive_core::DriveFamily::Sc750, faultCode);
 }
 
 QString Sc750ErrorText::runTimeHint(const QString& message) {
@@ -101,22 +57,17 @@ QString Sc750ErrorText::runTimeHint(const QString& message) {
 }
 
 ErrorLogModel::Entry Sc750ErrorText::fault(int faultCode) {
-    ErrorLogModel::Entry e;
-    e.family = drive_core::DriveFamily::Sc750;
-    e.code = faultCode;
-    e.level = levelOf(faultCode);
-    e.severity = isNoFault(faultCode) ? tr("Status") : tr("Fault");
+    ErrorLogModel::Entry e = catalogErrorEntry(drive_core::DriveFamily::Sc750, faultCode);
     e.hint = faultHint(faultCode);
     if (const cat::FaultInfo* info = cat::findFault(faultCode)) {
-        e.codeText = text(info->display);
-        // The SC752/753 words; the SC754-756 ones differ for a few codes and go in the tool tip.
-        e.message = text(info->sc752.empty() ? info->sc754 : info->sc752);
+        // The SC752/753 words (the entry's message); the SC754-756 ones differ for a few codes: in the tool tip.
         e.explanation = tr("FAULTCODE %1, display \"%2\" (%3)").arg(faultCode).arg(e.codeText, text(info->manualLines));
         if (info->sc754 != info->sc752)
             e.explanation +=
                 QLatin1Char('\n') + tr("SC752/753: %1\nSC754/755/756: %2").arg(text(info->sc752), text(info->sc754));
     } else {
-        e.codeText = QString::number(faultCode);
+        e.level = Level::Fault;
+        e.severity = tr("Fault");
         e.message = tr("Unknown fault code %1").arg(faultCode);
     }
     return e;

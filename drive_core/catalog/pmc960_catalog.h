@@ -72,6 +72,8 @@ std::span<const CommandInfo> commands();
 std::span<const ParameterInfo> parameters();
 
 const ErrorInfo* findError(int code);
+// What to do about an error (error_remedies.cpp); "" where there is nothing specific to say.
+std::string_view errorRemedy(int code);
 const CommandInfo* findCommand(std::string_view upperName);
 const ParameterInfo* findParameter(std::string_view upperName);
 

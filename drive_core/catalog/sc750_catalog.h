@@ -86,6 +86,8 @@ const FunctionInfo* findFunction(std::string_view name);
 const StatementInfo* findStatement(std::string_view name);
 int interruptIndex(std::string_view label);
 const FaultInfo* findFault(int code);
+// What to do about a fault (error_remedies.cpp); "" for a code not in the table.
+std::string_view faultRemedy(int code);
 
 // Fault codes the simulator raises itself.
 inline constexpr int kFaultNone = 0;

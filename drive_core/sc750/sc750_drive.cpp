@@ -56,8 +56,8 @@ void Sc750Drive::powerUp() {
     m_timeBase = 0;
     m_timeOffset_s = 0;
     m_encoderPosition = 0;
-    m_actual_counts = m_actualVel_cps = m_lastShaft_counts = 0;
-    m_lagging = false;
+    m_servo.powerUp(); // the shaft stays where it is; POSITION counts from 0 again
+    m_actual_counts = m_lastShaft_counts = 0;
     m_analogInFiltered_V = m_dacmon_V = m_encoderOut_counts = 0;
     m_ratioFromPulses = false;
     m_lastInput7 = m_lastInput8 = true;
@@ -130,9 +130,9 @@ void Sc750Drive::tick() {
         m_disableEvent = true;
     }
     m_wasEnabled = en;
+    servoTick(en); // the loops compare the command and the shaft at the tick's start, then the motor moves
     m_motion.step(kTick_s);
-    if (en) m_motion.stepGearing(kTick_s, gearSettings());
-    followCommand();
+    if (en && num(ix().blktype) == 2) m_motion.stepGearing(kTick_s, gearSettings());
     analogTick();
     registration();
     m_encoderPosition += m_masterFrequency * kTick_s;
@@ -246,12 +246,19 @@ SimulatorStatus Sc750Drive::status() const {
     s.positiveLimit = m_inhibitCw;
     s.negativeLimit = m_inhibitCcw;
     s.position_rev = m_actual_counts / kCountsPerRev;
-    s.velocity_rpm = m_lagging ? m_actualVel_cps / kCpsPerRpm : m_motion.velocity_rpm();
+    s.velocity_rpm = m_servo.velocity_cps() / kCpsPerRpm;
+    s.current_a = m_servo.current_A();
+    const physics::Plant& plant = m_servo.plant();
+    s.loadTorque_Nm = plant.load().externalTorque_Nm;
+    s.loadInertia_kgm2 = plant.load().inertia_kgm2;
+    s.couplingStiffness_NmPerRad = plant.load().couplingStiffness_NmPerRad;
+    s.couplingDamping_NmPerRadPerS = plant.load().couplingDamping_NmPerRadPerS;
+    s.resonance_Hz = plant.resonance_Hz();
     s.analogInput_V = m_analogIn_V;
     s.analogOutput_V = m_dacmon_V;
     s.encoderOutput_counts = std::llround(m_encoderOut_counts);
     s.masterFrequency_Hz = m_masterFrequency;
-    s.motorName = "SC750 ideal servo";
+    s.motorName = m_servo.motor().name;
     return s;
 }
 

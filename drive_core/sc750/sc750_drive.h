@@ -1,5 +1,5 @@
 // The simulated SC750 servocontroller: runs a downloaded ServoBASIC Plus .BIN on the Vm, its motion on the
-// shared profile generator (ideal servo: POSITION follows POS.COMMAND), discrete I/O, WHEN, interrupts,
+// shared profile generator, its servo loops on the shared plant (Sc750Servo), discrete I/O, WHEN, interrupts,
 // the serial port shared by the program's PRINT/INPUT and the Motion Dialogue protocol (PROTOCOL.md).
 // Time is injected through step(); the drive ticks every 0.427 ms.
 #pragma once
@@ -8,6 +8,7 @@
 #include "drive_core/drive.h"
 #include "sc750_monitor.h"
 #include "sc750_motion.h"
+#include "sc750_servo.h"
 #include "sc750_vm.h"
 #include "sc750_vm_host.h"
 
@@ -52,10 +53,12 @@ public:
         m_inhibitCcw = ccwInhibit;
     }
     void setAnalogInput_V(double volts) override { m_analogIn_V = volts; }
-    void setLoadTorque_Nm(double) override {}
-    void setLoadInertia_kgm2(double) override {}
+    void setLoadTorque_Nm(double torque_Nm) override;
+    void setLoadInertia_kgm2(double inertia_kgm2) override;
+    bool setLoadCoupling(double stiffness_NmPerRad, double damping_NmPerRadPerS) override;
     void setMasterFrequency_Hz(double countsPerSecond) override { m_masterFrequency = countsPerSecond; }
-    bool selectMotor(std::string_view) override { return false; }
+    // A Controller Set Up motor (R32G ...) or a reference motor (REF-MEDIUM ...); the shaft starts at rest.
+    bool selectMotor(std::string_view name) override;
     void powerCycle() override { powerUp(); }
     SimulatorStatus status() const override;
 
@@ -112,11 +115,13 @@ private:
     void registration();
     void refreshInterruptsEnabled();
     bool interruptAsserted(int source);
-    // sc750_drive_io.cpp: the shaft following the command (inhibits), analog input/output, encoder output.
-    void followCommand();
+    // sc750_drive_servo.cpp: the servo loops for the BLKTYPE, the shaft they move, the settings they read.
+    void servoTick(bool enabled);
+    ServoSettings servoSettings() const;
+    // sc750_drive_io.cpp: analog input/output, encoder output.
     void analogTick();
     double dacSignal_V();
-    double lag_counts() const { return m_motion.shaft_counts() - m_actual_counts; } // POS.ERROR
+    double lag_counts() const { return m_motion.shaft_counts() - m_actual_counts; } // POS.ERROR, not rounded
 
     struct Timer {
         bool pulse = false;
@@ -130,6 +135,7 @@ private:
     Vm m_vm{*this};
     Sc750Monitor m_monitor{*this};
     Sc750Motion m_motion;
+    Sc750Servo m_servo;
     bds5::Bds5Uart m_uart;
     std::vector<Value> m_values; // predefined variables by catalog index
     std::vector<std::uint8_t> m_bin;
@@ -152,9 +158,7 @@ private:
     double m_masterFrequency = 0;
     double m_encoderPosition = 0;
     bool m_inhibitCw = false, m_inhibitCcw = false;
-    double m_actual_counts = 0; // the shaft (generator coordinates): lags the command only when inhibited
-    double m_actualVel_cps = 0; // its speed while it lags
-    bool m_lagging = false;
+    double m_actual_counts = 0; // the shaft (generator coordinates, counts since power-up), from the plant
     double m_analogIn_V = 0;         // the bench's voltage on the analog input
     double m_analogInFiltered_V = 0; // ANALOG.IN, after ADF0
     double m_dacmon_V = 0;           // DACMON = the analog output, after DMF0

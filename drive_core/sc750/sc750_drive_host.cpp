@@ -89,6 +89,21 @@ const DriveIndex& driveIndex() {
         i.ccwot = at("CCW.OT.LIMIT");
         i.poserrmoving = at("POS.ERROR.MOVING");
         i.poserrstopped = at("POS.ERROR.STOPPED");
+        i.kvp = at("KVP");
+        i.kvi = at("KVI");
+        i.kpp = at("KPP");
+        i.kvff = at("KVFF");
+        i.arf0 = at("ARF0");
+        i.arf1 = at("ARF1");
+        i.ilc = at("ILC");
+        i.ilmtplus = at("ILMT.PLUS");
+        i.ilmtminus = at("ILMT.MINUS");
+        i.cmdgain = at("CMDGAIN");
+        i.itf0 = at("ITF0");
+        i.model = at("MODEL");
+        i.velerr = at("VEL.ERR");
+        i.icmd = at("ICMD");
+        i.ifb = at("IFB");
         return i;
     }();
     return index;
@@ -119,7 +134,7 @@ Value Sc750Drive::readVariable(int i) {
     const DriveIndex& x = ix();
     auto integer = [](double v) { return Value(std::int32_t(std::llround(v))); };
     const double pcmd = m_motion.positionCommand_counts();
-    // ideal servo: POSITION = POS.COMMAND unless an inhibit holds the shaft back (followCommand)
+    // POSITION is the plant's shaft in POS.COMMAND's coordinates, to the nearest count (DECISIONS 50)
     if (i == x.poscmd) return integer(pcmd);
     if (i == x.position) return integer(pcmd - lag_counts());
     if (i == x.poserror) return Value(std::int32_t(std::llround(pcmd) - std::llround(pcmd - lag_counts())));
@@ -127,9 +142,12 @@ Value Sc750Drive::readVariable(int i) {
         const auto counts = std::llround(m_actual_counts);
         return Value(std::int32_t(((counts % 4096) + 4096) % 4096));
     }
-    if (i == x.velocity || i == x.rvel)
-        return Value(float(m_lagging ? m_actualVel_cps / kCpsPerRpm : m_motion.velocity_rpm()));
-    if (i == x.velcmd) return Value(float(m_motion.velocity_rpm()));
+    if (i == x.velocity) return Value(float(m_servo.averageVelocity_cps() / kCpsPerRpm));
+    if (i == x.rvel) return Value(float(m_servo.velocity_cps() / kCpsPerRpm));
+    if (i == x.velcmd) return Value(float(m_servo.velocityCommand_cps() / kCpsPerRpm));
+    if (i == x.velerr) return Value(float(m_servo.velocityError_cps() / kCpsPerRpm));
+    if (i == x.icmd) return Value(float(m_servo.currentCommand_A()));
+    if (i == x.ifb) return Value(float(m_servo.current_A()));
     if (i == x.moving) return Value(std::int32_t(m_motion.moving() ? 1 : 0));
     if (i == x.inposition)
         return Value(
@@ -244,6 +262,7 @@ void Sc750Drive::registration() {
 
 void Sc750Drive::motion(int kind) {
     if (!enabled()) return; // motion statements are ignored while disabled (L1428)
+    if (num(ix().blktype) != 2) return; // and when the analog input commands the loops (DECISIONS 53)
     switch (kind) {
     case 1: m_motion.goVel(settings()); break;
     case 2: m_motion.goIncr(num(ix().indexdist), settings()); break;
@@ -279,7 +298,8 @@ std::string Sc750Drive::takeChar() {
 
 double Sc750Drive::whenSample(int source) {
     if (source >= 1 && source <= 16) return input(source) ? 1 : 0;
-    if (source == 17 || source == 18) return std::llround(m_motion.positionCommand_counts());
+    if (source == 17) return std::llround(m_motion.positionCommand_counts());
+    if (source == 18) return std::llround(m_motion.positionCommand_counts() - lag_counts()); // POSITION
     if (source == 19) return std::llround(m_encoderPosition);
     return m_analogInFiltered_V; // 20: ANALOG.IN
 }
@@ -295,6 +315,8 @@ void Sc750Drive::whenLatch() {
     set(x.whenAnalog, readVariable(x.analogin));
     set(x.whenDacmon, readVariable(x.dacmon));
     set(x.whenVelcmd, readVariable(x.velcmd));
+    set(x.whenIcmd, readVariable(x.icmd));
+    set(x.whenIfb, readVariable(x.ifb));
 }
 
 void Sc750Drive::whenAction(int action, int argument, float value) {

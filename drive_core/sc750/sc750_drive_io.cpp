@@ -1,6 +1,5 @@
-// The simulated SC750's shaft and analog side: the shaft following the command (held back by the
-// directional inhibits), the analog input (ANALOG.IN), the analog output (DACMAP/DMGAIN/ANALOG.OUT ->
-// DACMON), the encoder output (ENC.OUT) and which interrupt sources are asserted. DECISIONS 39-43.
+// The simulated SC750's analog side: the analog input (ANALOG.IN), the analog output (DACMAP/DMGAIN/
+// ANALOG.OUT -> DACMON), the encoder output (ENC.OUT) and which interrupt sources are asserted. DECISIONS 39-43.
 #include "sc750_drive.h"
 #include "sc750_drive_index.h"
 
@@ -20,47 +19,32 @@ double lowPass(double filtered, double input, double corner_Hz) {
 }
 } // namespace
 
-// The ideal servo puts the shaft on the command every tick. An active inhibit (INH+ clockwise, INH-
-// counter-clockwise) takes away torque in its direction: the shaft decelerates to rest at DECEL.RATE
-// while the command runs on, so POS.ERROR grows (L1484). Once released the ideal servo closes the error.
-void Sc750Drive::followCommand() {
-    const double target = m_motion.shaft_counts();
-    const double command_cps = m_motion.velocity_rpm() * kCpsPerRpm;
-    double v = (target - m_actual_counts) / kTick_s;
-    const double brake = num(ix().decel) * kCpsPerRpm * kTick_s;
-    bool held = false;
-    if (m_inhibitCw && v > 0) {
-        const double slowing = std::max(0.0, std::min(m_actualVel_cps, std::max(command_cps, 0.0)) - brake);
-        held = slowing < v;
-        v = std::min(v, slowing);
-    } else if (m_inhibitCcw && v < 0) {
-        const double slowing = std::min(0.0, std::max(m_actualVel_cps, std::min(command_cps, 0.0)) + brake);
-        held = slowing > v;
-        v = std::max(v, slowing);
-    }
-    if (!held) {
-        m_actual_counts = target; // exactly on the command: no rounding creeps into POS.ERROR
-        m_actualVel_cps = command_cps;
-        m_lagging = false;
-        return;
-    }
-    m_actual_counts += v * kTick_s;
-    m_actualVel_cps = v;
-    m_lagging = true;
-}
-
 // The signal DACMAP selects, scaled to volts (L2147-L2175): DMGAIN multiplies every source but ANALOG.OUT;
 // position signals roll over at ±5 V, the others clamp there.
 double Sc750Drive::dacSignal_V() {
     const int map = int(num(ix().dacmap));
     if (map == 0) return std::clamp(num(ix().analogout), -5.0, 5.0);
     const cat::DacMapInfo& info = cat::dacMap()[std::size_t(map)];
+    // The servo's signals straight from the loops (no look-up by name: this runs every tick); positions in
+    // whole counts, as the variables read.
+    const double pcmd = m_motion.positionCommand_counts();
     double value = 0;
-    if (map == 10) {
-        value = m_analogInFiltered_V; // FAD: the A/D after its filter
-    } else if (const int index = cat::variableIndex(info.mnemonic); index >= 0) {
-        value = toDouble(readVariable(index));
-    } // FVEL.ERR, IT.FILT: not modelled by the ideal servo, 0
+    switch (map) {
+    case 1: value = m_servo.averageVelocity_cps() / kCpsPerRpm; break;
+    case 2: value = m_servo.velocityCommand_cps() / kCpsPerRpm; break;
+    case 3: value = m_servo.velocityError_cps() / kCpsPerRpm; break;
+    case 4: value = m_servo.filteredVelocityError_cps() / kCpsPerRpm; break;
+    case 5: value = double(std::llround(pcmd - lag_counts())); break;
+    case 6: value = double(std::llround(pcmd) - std::llround(pcmd - lag_counts())); break;
+    case 7: value = double(std::llround(pcmd)); break;
+    case 8: value = m_servo.currentCommand_A(); break;
+    case 9: value = m_servo.current_A(); break;
+    case 10: value = m_analogInFiltered_V; break; // FAD: the A/D after its filter
+    case 11: value = m_masterFrequency; break;
+    case 12: value = double(std::llround(m_encoderPosition)); break;
+    case 13: value = m_servo.itFiltered_A(); break;
+    default: break;
+    }
     if (info.unit == "kRPM" || info.unit == "kHz") value /= 1000.0;
     if (info.unit == "rev" || info.unit == "4096 counts") value /= kCountsPerRev;
     const double volts = value * info.voltsPerUnit * num(ix().dmgain);

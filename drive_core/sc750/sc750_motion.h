@@ -42,6 +42,9 @@ public:
     void stepGearing(double dt_s, const GearSettings& g);
 
     double positionCommand_counts() const { return shaft_counts() + m_offset_counts; }
+    // Puts the command on a shaft position (counts since power-up) without motion, POS.COMMAND's coordinates
+    // kept: the drive disabled or without a position loop (it follows the shaft), BLKTYPE 3 (the analog input).
+    void setShaftCommand(double counts) { m_generator.setPosition(counts - m_gear_counts); }
     void setPositionCommand(double counts) { m_offset_counts = counts - shaft_counts(); }
     // The shaft's travel since power-up, unaffected by POS.COMMAND writes (the bench's home switch uses it).
     double shaft_counts() const { return m_generator.position() + m_gear_counts; }

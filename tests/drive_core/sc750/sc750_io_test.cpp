@@ -94,7 +94,8 @@ TEST(Sc750Io, CwInhibitHoldsTheShaftRaisesCwinhAndPosError) { // L1484, L1853, L
             "INTERRUPT CWINH\nPRINT \"cwinh\"\nEND INTERRUPT\n"
             "INTERRUPT POS.ERROR\nPRINT \"poserr\"; POS.ERROR > POS.ERROR.MOVING\nABORT.MOTION\nEND INTERRUPT\n");
     b.run(0.2);
-    EXPECT_EQ(b.value("POS.ERROR"), 0);
+    EXPECT_GT(b.value("POS.ERROR"), 0); // the following error at 600 RPM, well below POS.ERROR.MOVING
+    EXPECT_LT(b.value("POS.ERROR"), 0.25 * b.value("POS.ERROR.MOVING"));
     EXPECT_EQ(runSimulatorCommand(b.drive, "limits on off"), "OK"); // INH+ active
     b.run(0.01);
     EXPECT_EQ(b.out, "cwinh\r\n");
@@ -103,12 +104,12 @@ TEST(Sc750Io, CwInhibitHoldsTheShaftRaisesCwinhAndPosError) { // L1484, L1853, L
     EXPECT_NEAR(b.value("POSITION"), held, 1300);
     EXPECT_EQ(b.out, "cwinh\r\nposerr-1 \r\n");
     EXPECT_EQ(b.value("INTR.POS.ERROR"), 0);
-    EXPECT_EQ(b.value("VELOCITY"), 0);
+    EXPECT_NEAR(b.value("VELOCITY"), 0, 0.5);
     EXPECT_EQ(b.value("IN.POSITION"), 0);
     EXPECT_EQ(statusField(b.drive, "limit_pos"), "1");
     runSimulatorCommand(b.drive, "limits off off");
-    b.run(0.2);
-    EXPECT_EQ(b.value("POS.ERROR"), 0); // the ideal servo closes the error once released
+    b.run(0.5);
+    EXPECT_EQ(b.value("POS.ERROR"), 0); // released, the position loop closes the error
     EXPECT_EQ(b.value("IN.POSITION"), 1);
 }
 
@@ -118,7 +119,7 @@ TEST(Sc750Io, CcwInhibitDoesNotHoldClockwiseMotion) {
     b.drive.setLimitSwitches(false, true);
     b.run(1.0);
     EXPECT_EQ(b.out, "ccwinh\r\n");
-    EXPECT_EQ(b.value("POSITION"), 4096);
+    EXPECT_EQ(b.value("POSITION"), 4096); // after the profile, the shaft settled on the target
     EXPECT_EQ(b.value("POS.ERROR"), 0);
 }
 
