@@ -244,7 +244,7 @@ void Pmc960Interpreter::gainsArgument(char c) {
         if (value < 0 || value > 255) return fail(0x90), false;
         if (reg == 'F' && Pmc960Table::feedForwardOverflows(value)) return fail(0x9C), false;
         m_state.table.set(std::string("TG") + reg, value);
-        m_state.motion.setLoop({int(m_state.table.inUse("TGP")), int(m_state.table.inUse("TGF"))});
+        m_state.applyTable();
         return true;
     };
     const bool hexRegister =

@@ -49,13 +49,14 @@ std::string Pmc960Interpreter::display(std::string_view command, char kind) cons
     if (k == "A")
         return num(stored ? double(reg.acceleration) : units.userAccel(std::abs(motion.acceleration_cps2())), 16);
     if (k == "V") return num(stored ? double(reg.velocity) : units.userVelocity(std::abs(motion.velocity_cps())), 16);
-    if (k == "J") return num(stored ? double(reg.jogSpeed) : units.userVelocity(std::abs(motion.velocity_cps())), 16);
+    if (k == "J")
+        return num(stored ? double(reg.jogSpeed) : units.userVelocity(std::abs(motion.referenceVelocity_cps())), 16);
     if (k == "I") return num(stored ? double(reg.distance) : units.userPosition(motion.remaining_counts()), 32);
     if (k == "G") return num(stored ? double(reg.goPosition) : units.userPosition(motion.actual_counts()), 32);
     if (k == "H") {
         const std::int64_t size = m_state.table.inUse("THA");
         if (stored) return num(double(reg.homeLocation), 16);
-        if (size == 0) return num(units.userVelocity(std::abs(motion.velocity_cps())), 16);
+        if (size == 0) return num(units.userVelocity(std::abs(motion.referenceVelocity_cps())), 16);
         const double reading = std::fmod(std::fmod(motion.actual_counts(), double(size)) + double(size), double(size));
         return num(std::floor(reading), 16);
     }

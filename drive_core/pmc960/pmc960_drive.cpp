@@ -35,7 +35,7 @@ void Pmc960Drive::reset(bool powerCycle) {
     m_state.reg = Pmc960Registers{};
     m_state.snapshot = Pmc960Snapshot{};
     m_state.motion.reset();
-    m_state.motion.setLoop({int(m_state.table.inUse("TGP")), int(m_state.table.inUse("TGF"))});
+    m_state.applyTable();
     m_state.motion.setTripPoint(2048);
     if (const auto image = Pmc960Program::epromProgram(m_eprom)) m_state.program.assign(*image);
     m_interpreter.abort();
@@ -136,14 +136,15 @@ void Pmc960Drive::step(Microseconds dt) {
 void Pmc960Drive::tick(std::int64_t dt_us) {
     m_time += Microseconds{dt_us};
     const std::int64_t now = m_time.count();
+    m_state.motion.setStopTorque(double(m_state.reg.torque));
     if (dt_us > 0 && m_state.motion.step(double(dt_us) / 1e6)) { // PSJ overflow: IDLE and #E1 (L223)
         raise(0xE1);
         m_state.motion.setMode(0);
     }
-    if (m_state.table.inUse("THS") != 0 && m_state.motion.moving()) { // a software limit stops at TUB
+    if (m_state.softwareLimits && m_state.motion.moving()) { // a software limit stops at TUB
         const Pmc960Units units = m_state.units();
         const double position = m_state.motion.commanded_counts();
-        const double velocity = m_state.motion.velocity_cps();
+        const double velocity = m_state.motion.referenceVelocity_cps();
         if ((velocity > 0 && position >= units.position_counts(double(m_state.reg.limitForward))) ||
             (velocity < 0 && position <= units.position_counts(double(m_state.reg.limitReverse))))
             m_state.motion.stop(units.maximumAccel_cps2());

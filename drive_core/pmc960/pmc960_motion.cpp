@@ -1,4 +1,4 @@
-// PMC-960 motion and the following-error model.
+// PMC-960 motion: the reference, the PSJ and the modes around the servo loops.
 #include "pmc960_motion.h"
 
 #include <algorithm>
@@ -13,10 +13,16 @@ void Pmc960Motion::reset() {
     m_cam = false;
     m_camPending.reset();
     m_mode = 0;
-    m_error_counts = 0;
-    m_actual_counts = 0;
+    m_psj = 0;
     m_overflow = false;
     m_forward = true;
+    m_fps = false;
+    m_fpsArmed = false;
+    m_due_us = 0;
+    m_servo.resetIntegrators();
+    m_servo.setCount(0); // the absolute position counts from 0 at power-up, the shaft where it is
+    m_feedback_counts = 0;
+    resyncReference();
 }
 
 // SM3 leaves the PSJ alone: its count acts at once and the motor jumps to cancel it (L1592-1593). It does
@@ -24,13 +30,18 @@ void Pmc960Motion::reset() {
 void Pmc960Motion::setMode(int mode) {
     if (mode == 0) {
         m_fps = false;
-        sharpStop(); // the reference stops where it is, the motor too (no coasting model); the PSJ keeps its count
+        sharpStop(); // the reference stops where it is; the disabled servodrive brakes the motor (S9); the
+                     // PSJ keeps its count and goes on counting the feedback
     } else if (mode == 1 || mode == 2) { // the PSJ is cleared (SM1: not summed), and an overflow with it
         // SM2 at rest without an overflow: the absolute position takes up the error (L1589-1590), so the
         // reference is where the motor is; in motion or after an overflow the position is not adjusted.
-        if (mode == 2 && !moving() && !m_overflow) m_generator.setPosition(m_actual_counts);
-        m_error_counts = 0;
+        if (mode == 2 && !moving() && !m_overflow) {
+            m_generator.setPosition(actual_counts());
+            resyncReference();
+        }
+        m_psj = 0;
         m_overflow = false;
+        m_servo.resetIntegrators();
     }
     m_mode = mode;
 }
@@ -64,14 +75,16 @@ void Pmc960Motion::jog(double velocity_cps, double accel_cps2) {
 
 void Pmc960Motion::setPositiveStop(std::optional<double> position_counts) {
     m_stop_counts = position_counts;
-    if (position_counts) m_stopAhead = *position_counts >= m_actual_counts;
+    if (position_counts) m_stopAhead = *position_counts >= m_servo.position_counts();
 }
 
 void Pmc960Motion::stop(double decel_cps2) {
     if (m_fps) { // ends FPS: torque off, the absolute position corrected, PSJ reset, the loop closed (L1684)
         m_fps = false;
-        m_generator.setPosition(m_actual_counts);
-        m_error_counts = 0;
+        m_generator.setPosition(actual_counts());
+        resyncReference();
+        m_psj = 0;
+        m_servo.resetIntegrators();
         return;
     }
     m_generator.setHeld(false); // a stop also cancels a start still waiting for SENSOR
@@ -88,13 +101,16 @@ void Pmc960Motion::sharpStop() {
     m_camPending.reset();
     m_generator = motion::ProfileGenerator{};
     m_generator.setPosition(here);
+    resyncReference();
 }
 
 double Pmc960Motion::normalize(double position_counts) {
-    const double cancelled = m_error_counts;
+    const double cancelled = double(m_psj);
     m_generator.setPosition(position_counts);
-    m_actual_counts = position_counts;
-    m_error_counts = 0;
+    resyncReference();
+    m_servo.setCount(std::llround(position_counts));
+    m_feedback_counts = m_servo.count();
+    m_psj = 0;
     return cancelled;
 }
 
@@ -132,9 +148,9 @@ void Pmc960Motion::sensor() {
 }
 
 double Pmc960Motion::steadyError_counts(double velocity_cps) const {
-    const double kv = std::max(1, m_loop.positionGain) * 4.0;
-    const double ff = std::min(1.0, m_loop.feedForwardGain / 128.0);
-    return std::abs(velocity_cps) * (1 - ff) / kv;
+    const double kv = m_servo.positionLoopGain_perS();
+    if (kv <= 0) return 1e12; // no position loop: no steady error to speak of
+    return std::abs(velocity_cps) * std::abs(1 - m_servo.feedForwardShare()) / kv;
 }
 
 double Pmc960Motion::remaining_counts() const {
@@ -142,9 +158,20 @@ double Pmc960Motion::remaining_counts() const {
 }
 
 bool Pmc960Motion::step(double dt_s) {
-    const double before = m_generator.position();
-    m_generator.step(dt_s);
-    const double moved = m_generator.position() - before;
+    m_due_us += std::llround(dt_s * 1e6);
+    while (m_due_us >= Pmc960Servo::kPeriod_us) {
+        m_due_us -= Pmc960Servo::kPeriod_us;
+        if (servoTick()) return true;
+    }
+    return false;
+}
+
+bool Pmc960Motion::servoTick() {
+    constexpr double period = Pmc960Servo::kPeriod_s;
+    // The reference generator runs on the crystal, or in slave mode on the master's pulses (S11).
+    double referenceTime_s = period;
+    if (m_slave) referenceTime_s = std::max(0.0, m_master.advance(period)) / m_servo.gains().rangeTop_cps;
+    if (referenceTime_s > 0) m_generator.step(referenceTime_s);
     if (!moving()) m_sensorAction = SensorAction::None;
     if (m_camPending && (!moving() || m_generator.segment() == 2)) { // the ramp before it has ended
         const CamSegment next = *m_camPending;
@@ -152,33 +179,38 @@ bool Pmc960Motion::step(double dt_s) {
         (void)startCam(next, false);
     }
     if (!moving()) m_cam = false;
-    if (m_mode == 0) return false;
-    // e' = v (1 - ff) - kv e, integrated exactly over dt: kv = 4/s per PLGAIN step (chosen), ff = FFGAIN/128.
-    const double kv = std::max(1, m_loop.positionGain) * 4.0;
-    if (m_mode == 1) { // velocity loop only: the motor runs at the feedforward share of the speed, unchecked
-        m_actual_counts += moved * m_loop.feedForwardGain / 128.0;
-        return false;
-    }
+
+    const std::int64_t reference = std::llround(m_generator.position());
+    if (m_mode != 1) m_psj += reference - m_reference_counts; // SM1: not summed (L217)
+    m_reference_counts = reference;
+
+    using Loop = Pmc960Servo::Loop;
+    Loop loop = Loop::Off;
+    if (m_mode == 1) loop = Loop::Velocity;
+    if (m_mode >= 2) loop = m_fps ? Loop::Torque : Loop::Position;
+    if (m_mode >= 2 && m_overflow) loop = Loop::Off; // SM3 after an overflow trips before the loop closes
+    const double referenceVelocity = m_generator.velocity() * referenceTime_s / period;
+    m_servo.tick(loop, double(m_psj), referenceVelocity, (m_forward ? 1 : -1) * m_stopTorque);
+    if (m_stop_counts &&
+        (m_stopAhead ? m_servo.position_counts() > *m_stop_counts : m_servo.position_counts() < *m_stop_counts))
+        m_servo.stallAt(*m_stop_counts); // the motor stalls on the stop; the reference runs on into the PSJ
+
+    const std::int64_t feedback = m_servo.count();
+    if (m_mode != 1) m_psj -= feedback - m_feedback_counts;
+    m_feedback_counts = feedback;
+
+    if (m_mode < 2) return false; // SF trips only in a position mode (L221-223)
     if (m_overflow) return true;
     if (m_fps) return false; // torque against the stop: no position or velocity loop
-    const double ff = std::min(1.0, m_loop.feedForwardGain / 128.0);
-    const double steady = m_generator.velocity() * (1 - ff) / kv;
-    const double error = m_error_counts;
-    m_error_counts = steady + (m_error_counts - steady) * std::exp(-kv * dt_s);
-    if (!moving() && std::abs(m_error_counts) < 0.5) m_error_counts = 0;
-    m_actual_counts += moved - (m_error_counts - error);
-    if (m_stop_counts && (m_stopAhead ? m_actual_counts > *m_stop_counts : m_actual_counts < *m_stop_counts)) {
-        m_actual_counts = *m_stop_counts; // the motor stalls on the stop; the reference runs on into the PSJ
-        m_error_counts = m_generator.position() - m_actual_counts;
-    }
     if (!moving()) m_fpsArmed = false;
-    if (std::abs(m_error_counts) > m_trip_counts && m_fpsArmed) { // at the stop: hold torque (L1676-1680)
+    const bool beyond = double(std::abs(m_psj)) > m_trip_counts;
+    if (beyond && m_fpsArmed) { // at the stop: hold torque (L1676-1680)
         m_fpsArmed = false;
         m_fps = true;
         sharpStop();
         return false;
     }
-    if (std::abs(m_error_counts) > m_trip_counts) m_overflow = true; // the caller snapshots, then SM0
+    if (beyond) m_overflow = true; // the caller snapshots, then SM0
     return m_overflow;
 }
 

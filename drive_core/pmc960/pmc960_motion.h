@@ -1,10 +1,14 @@
 // PMC-960 motion: the shared profile generator makes the commanded position (the digital reference into the
-// PSJ); a first-order position loop makes the actual position lag it by the following error (PSJ content).
-// The seed gives no plant equations (digest §9.10): the loop's velocity constant is chosen from PLGAIN and
-// the feedforward gain cancels part of the lag. SF trips to IDLE when |PSJ| exceeds the trip point (L223).
+// PSJ) and its rate (the analog feedforward); the PSJ counts reference less feedback; Pmc960Servo's analog
+// loops turn it into current for the motor on the shared plant. SF trips to IDLE when |PSJ| exceeds the trip
+// point (L223). Time runs in the servo's fixed periods, whatever slices the caller steps by.
 #pragma once
 
+#include "drive_core/master_signal.h"
 #include "drive_core/motion/profile_generator.h"
+#include "pmc960_servo.h"
+
+#include <cstdint>
 
 #include <optional>
 
@@ -12,17 +16,23 @@ namespace drive_core::pmc960 {
 
 class Pmc960Motion {
 public:
-    struct Loop {
-        int positionGain = 16;    // TGP (PLGAIN)
-        int feedForwardGain = 16; // TGF (FFGAIN)
-    };
-
+    // The motion and loops restart (power-up); the motor stays where it is and its count restarts at 0.
     void reset();
-    void setLoop(Loop loop) { m_loop = loop; }
+    void setLoop(const Pmc960Servo::Gains& gains) { m_servo.setGains(gains); }
+    Pmc960Servo& servo() { return m_servo; }
+    const Pmc960Servo& servo() const { return m_servo; }
+    // Slave mode (THR bit 6, L1978): the master's pulses clock the reference generator instead of the
+    // crystal, the range's top speed being the rate at which it runs as programmed (S11).
+    void setSlave(bool slave) { m_slave = slave; }
+    MasterSignal& master() { return m_master; }
+    const MasterSignal& master() const { return m_master; }
+    // ST (L1655-1688): the current held against a positive stop, 0-1,000 = 0-100 % of peak.
+    void setStopTorque(double permille) { m_stopTorque = permille / 1000.0; }
 
     // Modes 0-3 (SM, L1577-1601, L212-223). SM0 stops the reference and disables the drive, the PSJ keeping
-    // its count. SM1 (velocity): the PSJ is cleared and not summed; the motor runs at TGF/128 of the
-    // commanded speed with no position loop, so it drifts from the absolute position and never trips.
+    // its count. SM1 (velocity): the PSJ is cleared and not summed; the motor runs at the feedforward's
+    // share of the commanded speed with no position loop, so it drifts from the absolute position and never
+    // trips.
     // SM2 clears the PSJ; at rest and without an overflow the absolute position takes up the error (the
     // reference moves to the motor). SM3 keeps the PSJ: the motor jumps to where its count is cancelled.
     void setMode(int mode);
@@ -48,7 +58,7 @@ public:
     // SENSOR asserted (its edge): releases a held start, else does the motion's SensorAction.
     void sensor();
     bool waitingForSensor() const { return m_generator.held(); }
-    // The following error the loop settles to at a constant speed (adaptive depth, #B1).
+    // The following error the loops settle to at a constant speed (adaptive depth, #B1).
     double steadyError_counts(double velocity_cps) const;
 
     // Cam (7.4, pmc960_cam.cpp): a segment changes the speed uniformly over the distance to position_counts,
@@ -70,8 +80,8 @@ public:
     bool atPositiveStop() const { return m_fps; }
     void setPositiveStop(std::optional<double> position_counts);
 
-    // Advances dt; returns true when the following error exceeds the SF trip point in a position mode
-    // (the caller raises #E1 and sets SM0).
+    // Advances dt in whole servo periods (the remainder waits for the next call); returns true when the
+    // following error exceeds the SF trip point in a position mode (the caller raises #E1 and sets SM0).
     bool step(double dt_s);
     void setTripPoint(double counts) { m_trip_counts = counts; }
 
@@ -83,25 +93,37 @@ public:
     bool atTopSpeed() const { return moving() && !waitingForSensor() && m_generator.acceleration() == 0; }
     double commanded_counts() const { return m_generator.position(); }
     double target_counts() const { return m_generator.finalPosition(); }
-    // The motor's position (feedback); in position modes it trails the reference by the PSJ's count.
-    double actual_counts() const { return m_actual_counts; }
-    double velocity_cps() const { return m_generator.velocity(); }
+    // The motor's position (the feedback count); in position modes it trails the reference by the PSJ.
+    double actual_counts() const { return double(m_servo.count()); }
+    // The motor's speed (the tach), counts/s; the reference generator's rate (what J! shows).
+    double velocity_cps() const { return m_servo.velocity_cps(); }
+    double referenceVelocity_cps() const { return m_generator.velocity(); }
     double acceleration_cps2() const { return m_generator.acceleration(); }
-    double followingError_counts() const { return m_error_counts; }
+    // The PSJ's content, counts.
+    double followingError_counts() const { return double(m_psj); }
     double remaining_counts() const;
     bool forward() const { return m_forward; }
 
 private:
+    bool servoTick(); // one servo period; true on a PSJ overflow in a position mode
+    // The reference generator was moved without motion: the PSJ does not count the jump.
+    void resyncReference() { m_reference_counts = std::llround(m_generator.position()); }
+
     motion::ProfileGenerator m_generator;
-    Loop m_loop;
+    Pmc960Servo m_servo;
+    MasterSignal m_master;
+    bool m_slave = false;
+    std::int64_t m_due_us = 0; // time stepped in, not yet run as servo periods
     int m_mode = 0;
-    double m_error_counts = 0;  // the PSJ
-    double m_actual_counts = 0; // the motor
+    std::int64_t m_psj = 0;              // the PSJ: reference less feedback
+    std::int64_t m_reference_counts = 0; // the reference's last whole count summed into the PSJ
+    std::int64_t m_feedback_counts = 0;  // the feedback's last count summed into the PSJ
+    double m_stopTorque = 0;
     bool m_fpsArmed = false;
     bool m_fps = false;
     std::optional<double> m_stop_counts; // the bench's hard stop
     bool m_stopAhead = true;             // it lies forward of the motor
-    bool m_overflow = false;    // the PSJ passed the trip point; cleared by SM1 and SM2
+    bool m_overflow = false;             // the PSJ passed the trip point; cleared by SM1 and SM2
     double m_trip_counts = 2048;
     bool m_forward = true;
     struct CamSegment {

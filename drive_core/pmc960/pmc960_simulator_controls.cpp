@@ -3,6 +3,11 @@
 
 #include "pmc960_drive.h"
 
+#include "drive_core/physics/motor_parameters.h"
+
+#include <algorithm>
+#include <numbers>
+
 namespace drive_core::pmc960 {
 
 void Pmc960SimulatorControls::setInput(int number, bool on) {
@@ -27,6 +32,47 @@ void Pmc960SimulatorControls::setLimitSwitches(bool positiveTripped, bool negati
     m_drive.setInput(7, negativeTripped); // IN06' = - limit
 }
 
+void Pmc960SimulatorControls::setLoadTorque_Nm(double torque_Nm) {
+    Pmc960Servo& servo = m_drive.state().motion.servo();
+    physics::LoadParameters load = servo.plant().load();
+    load.externalTorque_Nm = torque_Nm;
+    servo.setLoad(load);
+}
+
+void Pmc960SimulatorControls::setLoadInertia_kgm2(double inertia_kgm2) {
+    Pmc960Servo& servo = m_drive.state().motion.servo();
+    physics::LoadParameters load = servo.plant().load();
+    load.inertia_kgm2 = std::max(inertia_kgm2, 0.0);
+    servo.setLoad(load);
+}
+
+bool Pmc960SimulatorControls::setLoadCoupling(double stiffness_NmPerRad, double damping_NmPerRadPerS) {
+    Pmc960Servo& servo = m_drive.state().motion.servo();
+    physics::LoadParameters load = servo.plant().load();
+    load.couplingStiffness_NmPerRad = std::max(stiffness_NmPerRad, 0.0);
+    load.couplingDamping_NmPerRadPerS = std::max(damping_NmPerRadPerS, 0.0);
+    servo.setLoad(load);
+    return true;
+}
+
+void Pmc960SimulatorControls::setMasterFrequency_Hz(double countsPerSecond) {
+    m_drive.state().motion.master().setFrequency_Hz(countsPerSecond);
+}
+
+bool Pmc960SimulatorControls::setMasterWave(const MasterWave& wave) {
+    m_drive.state().motion.master().setWave(wave);
+    return true;
+}
+
+bool Pmc960SimulatorControls::selectMotor(std::string_view name) {
+    const physics::ReferenceMotor* motor = physics::findReferenceMotor(name);
+    if (!motor) return false;
+    m_motorName = std::string(motor->name);
+    m_drive.state().motion.servo().setMotor(motor->motor);
+    m_drive.powerUp();
+    return true;
+}
+
 void Pmc960SimulatorControls::powerCycle() {
     m_drive.powerUp();
 }
@@ -43,13 +89,18 @@ SimulatorStatus Pmc960SimulatorControls::status() const {
     s.negativeLimit = m_drive.input(7);
     s.active = state.motion.enabled();
     s.fault = state.lines.fault || state.lines.estop;
-    const double countsPerRev = state.table.inUse("THA") > 0 ? double(state.table.inUse("THA")) : 4096.0;
-    s.position_rev = state.motion.actual_counts() / countsPerRev;
-    s.velocity_rpm = state.motion.velocity_cps() / countsPerRev * 60.0;
-    s.loadTorque_Nm = m_loadTorque_Nm;
-    s.loadInertia_kgm2 = m_loadInertia_kgm2;
-    s.masterFrequency_Hz = m_master_Hz;
-    s.motorName = "analog servodrive";
+    const physics::Plant& plant = state.motion.servo().plant();
+    s.position_rev = plant.motorAngle_rad() / (2 * std::numbers::pi);
+    s.velocity_rpm = plant.motorSpeed_radPerS() * 60 / (2 * std::numbers::pi);
+    s.current_a = plant.current_A();
+    s.loadTorque_Nm = plant.load().externalTorque_Nm;
+    s.loadInertia_kgm2 = plant.load().inertia_kgm2;
+    s.couplingStiffness_NmPerRad = plant.load().couplingStiffness_NmPerRad;
+    s.couplingDamping_NmPerRadPerS = plant.load().couplingDamping_NmPerRadPerS;
+    s.resonance_Hz = plant.resonance_Hz();
+    s.masterFrequency_Hz = state.motion.master().frequency_Hz();
+    s.masterWave = state.motion.master().wave();
+    s.motorName = m_motorName;
     return s;
 }
 

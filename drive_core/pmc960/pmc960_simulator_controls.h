@@ -1,6 +1,7 @@
 // The bench around a simulated PMC-960 (SimulatorControls): the generic lines mapped onto the controller's —
-// ENABLE = DRVRDY', MOTION = not ESTOP', HOME switch = SENSOR, limit switches = IN07'/IN06' (THL) — and a
-// status snapshot in the bench's units (THA counts per revolution; 4,096 for an encoder).
+// ENABLE = DRVRDY', MOTION = not ESTOP', HOME switch = SENSOR, limit switches = IN07'/IN06' (THL) — the
+// servodrive's motor and its load on the shared plant, the master (motion reference bus) input, and a
+// status snapshot in the bench's units.
 #pragma once
 
 #include "drive_core/simulator_controls.h"
@@ -19,20 +20,21 @@ public:
     void setHomeSwitch(bool on) override;
     void setHomeSwitchPosition_rev(double) override {}
     void setLimitSwitches(bool positiveTripped, bool negativeTripped) override;
-    void setLoadTorque_Nm(double torque_Nm) override { m_loadTorque_Nm = torque_Nm; }
-    void setLoadInertia_kgm2(double inertia_kgm2) override { m_loadInertia_kgm2 = inertia_kgm2; }
-    void setMasterFrequency_Hz(double countsPerSecond) override { m_master_Hz = countsPerSecond; }
-    // The PMC-960 drives any servodrive through an analog command: no motor model to choose.
-    bool selectMotor(std::string_view) override { return false; }
+    void setLoadTorque_Nm(double torque_Nm) override;
+    void setLoadInertia_kgm2(double inertia_kgm2) override;
+    bool setLoadCoupling(double stiffness_NmPerRad, double damping_NmPerRadPerS) override;
+    // The master input is the motion reference bus (EXTREF): it clocks the reference in slave mode (THR bit 6).
+    void setMasterFrequency_Hz(double countsPerSecond) override;
+    bool setMasterWave(const MasterWave& wave) override;
+    // The servodrive's motor (physics::referenceMotors(); REF-MEDIUM at first): a new machine, powered up.
+    bool selectMotor(std::string_view name) override;
     void powerCycle() override;
     SimulatorStatus status() const override;
 
 private:
     Pmc960Drive& m_drive;
     bool m_homeSwitch = false;
-    double m_loadTorque_Nm = 0;
-    double m_loadInertia_kgm2 = 0;
-    double m_master_Hz = 0;
+    std::string m_motorName = "REF-MEDIUM";
 };
 
 } // namespace drive_core::pmc960

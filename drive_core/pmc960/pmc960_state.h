@@ -66,10 +66,14 @@ struct Pmc960State {
     Pmc960Snapshot snapshot;
     Pmc960Motion motion;
     Pmc960Lines lines;
-    int inputs = 0; // IN15'..IN00', bit = asserted
+    int inputs = 0;              // IN15'..IN00', bit = asserted
+    bool softwareLimits = false; // THS in use, kept by applyTable() so no tick looks the table up
 
     Pmc960Format format() const { return Pmc960Format(int(table.inUse("THC"))); }
     Pmc960Units units() const { return Pmc960Units(table, format().engineeringUnits()); }
+    // Hands the table's gains, counts per revolution, velocity range and slave bit to the servo loops (after
+    // power-up and every T command; the loops never look the table up themselves).
+    void applyTable();
     char axisId() const { return char(table.inUse("THI")); }
     // SS (L1639-1648): 7 DRVON, 6 FPS, 4 CAM HOLD, 3 MOTION, 2 TOP VELOCITY, 1 DIRECTION (1 = forward).
     int motionBits() const;

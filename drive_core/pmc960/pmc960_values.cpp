@@ -75,6 +75,7 @@ bool Pmc960Interpreter::applyValue(const std::string& k, std::int64_t v) {
             if (double(v) / 10000.0 * double(m_state.table.inUse("TUV")) >= 384000) return fail(0xD4), false;
         }
         m_state.table.set(k, v);
+        m_state.applyTable();
     }
     return true;
 }

@@ -51,7 +51,7 @@ TEST(Pmc960Examples, Ex04Cam) { // L1116-1117: 100 RPM by position 1000, then on
     double speedAt1000 = -1;
     std::string out;
     for (int ms = 0; ms < 1000 && out.empty(); ++ms) {
-        if (speedAt1000 < 0 && motion.commanded_counts() >= 1000) speedAt1000 = motion.velocity_cps();
+        if (speedAt1000 < 0 && motion.commanded_counts() >= 1000) speedAt1000 = motion.referenceVelocity_cps();
         out = t.wait(1ms);
     }
     EXPECT_EQ(out, kPrompt);

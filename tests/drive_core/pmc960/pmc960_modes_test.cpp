@@ -14,16 +14,24 @@ long answer(TestDrive& t, std::string_view display) {
     return std::strtol(text.c_str() + display.size(), nullptr, 10);
 }
 
-// Factory loop: TGP 16 (kv 64/s), TGF 16 (ff 1/8); J100 jogs at 10,000 counts/s, a steady lag of 137 counts.
+// The servo loops run on the simulated motor (pmc960_physics_test.cpp); J100 jogs at 10,000 counts/s.
+// SM1: the motor's speed is the feedforward's share of the reference's, with no position loop: the distance
+// it runs is proportional to FFGAIN (the share itself depends on the motor and tach, DECISIONS.md S4).
 TEST(Pmc960Modes, VelocityModeRunsAtTheFeedforwardShareWithoutAPositionLoop) { // SM1
-    TestDrive t;
-    t.writeEnable();
-    EXPECT_EQ(t.type("TGF64\r"), prompted("TGF64"));
-    EXPECT_EQ(t.type("SM1\r"), prompted("SM1"));
-    EXPECT_EQ(t.type("I4096+\r", 500ms), prompted("I4096+"));
-    EXPECT_EQ(t.type("G!"), prompted("G!2048")); // half the distance: FFGAIN 64/128 of the speed
-    EXPECT_EQ(t.type("SF!"), prompted("SF!0"));  // the reference is not summed in the PSJ
-    EXPECT_EQ(t.type("SS?"), prompted("SS?82")); // DRVON, at rest, forward
+    auto velocityModeIndex = [](int feedForward) {
+        TestDrive t;
+        t.writeEnable();
+        const std::string gain = "TGF" + std::to_string(feedForward);
+        EXPECT_EQ(t.type(gain + "\r"), prompted(gain));
+        EXPECT_EQ(t.type("SM1\r"), prompted("SM1"));
+        EXPECT_EQ(t.type("I4096+\r", 500ms), prompted("I4096+"));
+        EXPECT_EQ(t.type("SF!"), prompted("SF!0"));  // the reference is not summed in the PSJ
+        EXPECT_EQ(t.type("SS?"), prompted("SS?82")); // DRVON, at rest, forward
+        return answer(t, "G!");
+    };
+    const long half = velocityModeIndex(16), full = velocityModeIndex(32);
+    EXPECT_NE(full, 4096);                               // no position loop: it does not land on the distance
+    EXPECT_NEAR(double(full) / double(half), 2.0, 0.05); // twice FFGAIN, twice the speed
 
     TestDrive position;
     position.writeEnable();
@@ -47,8 +55,10 @@ TEST(Pmc960Modes, IdleKeepsTheErrorAndSm2AtRestTakesItIntoTheAbsolutePosition) {
     TestDrive t;
     t.enable();
     t.type("J+\r", 300ms);
-    EXPECT_EQ(t.type("SM0\r"), prompted("SM0")); // the reference stops; the motor 137 counts behind it
-    EXPECT_EQ(answer(t, "SF!"), 137);
+    EXPECT_GT(answer(t, "SF!"), 0);              // the motor lags the reference
+    EXPECT_EQ(t.type("SM0\r"), prompted("SM0")); // the reference stops; the disabled drive brakes the motor
+    t.wait(50ms);
+    EXPECT_GT(answer(t, "SF!"), 0); // the PSJ keeps the count
     const long motor = answer(t, "G!");
     t.wait(200ms);
     EXPECT_EQ(answer(t, "G!"), motor); // nothing moves in IDLE
@@ -63,10 +73,10 @@ TEST(Pmc960Modes, Sm3KeepsTheErrorAndTheMotorJumpsToCancelIt) { // L1592-1593
     TestDrive t;
     t.enable();
     t.type("J+\r", 300ms);
-    t.type("SM0\r");
+    t.type("SM0\r", 50ms);
     const long error = answer(t, "SF!");
     const long motor = answer(t, "G!");
-    ASSERT_EQ(error, 137);
+    ASSERT_GT(error, 0);
     EXPECT_EQ(t.type("SM3\r", 500ms), prompted("SM3"));
     EXPECT_EQ(t.type("SF!"), prompted("SF!0"));
     EXPECT_NEAR(answer(t, "G!"), motor + error, 1); // where the reference stopped (each display rounded)
@@ -77,11 +87,11 @@ TEST(Pmc960Modes, Sm3KeepsTheErrorAndTheMotorJumpsToCancelIt) { // L1592-1593
 TEST(Pmc960Modes, Sm2AfterAnOverflowClearsThePsjWithoutAdjustingThePosition) { // L1590, L1598-1599
     TestDrive t;
     t.enable();
-    t.type("SF64\r");
+    t.type("SF32\r"); // below the lag at J100
     t.type("J+\r");
     EXPECT_EQ(t.wait(50ms), "#E1" + std::string(kPrompt));
     const long error = answer(t, "SF!");
-    EXPECT_GT(error, 64); // the overflowing count stays in the PSJ
+    EXPECT_GT(error, 0); // the count stays in the PSJ (less what the motor coasted as it was braked)
     EXPECT_EQ(t.type("SM2\r", 200ms), prompted("SM2"));
     EXPECT_EQ(t.type("SF!"), prompted("SF!0"));
     t.type("SF2048\r"); // room for the lag at V400
@@ -92,7 +102,7 @@ TEST(Pmc960Modes, Sm2AfterAnOverflowClearsThePsjWithoutAdjustingThePosition) { /
 TEST(Pmc960Modes, Sm3DoesNotClearAnOverflow) { // E1: "SM0 then SM1 or SM2" (L2382)
     TestDrive t;
     t.enable();
-    t.type("SF64\r");
+    t.type("SF32\r"); // below the lag at J100
     t.type("J+\r");
     ASSERT_EQ(t.wait(50ms), "#E1" + std::string(kPrompt));
     const long motor = answer(t, "G!");

@@ -26,7 +26,7 @@ TEST(Pmc960Protocol, PollsWorkInTheMiddleOfACommandAndDuringMotion) {
     TestDrive t;
     t.enable();
     t.type("J+\r");
-    t.wait(20ms);
+    t.wait(100ms); // the motor at the jog's speed
     EXPECT_EQ(t.type("A3" + attn('v') + "5\r"), "A3100\r5" + std::string(kPrompt));
     EXPECT_EQ(t.type("A?"), prompted("A?35"));
     EXPECT_EQ(t.type(attn('m')), "8E\r"); // DRVON MOTION TOP-VELOCITY FORWARD

@@ -3,6 +3,8 @@
 #include "pmc960_test_drive.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 namespace pmc960_test {
 namespace {
@@ -97,11 +99,18 @@ TEST(Pmc960Sensor, AdaptiveDepthStopsSdCountsPastSensor) { // SP bit 6 with SD (
 TEST(Pmc960Sensor, AdaptiveDepthTooSmallIsB1) {
     TestDrive t;
     t.enable();
+    // The following error at V400 as the loops make it: jog there and read the PSJ.
+    t.type("J400+\r", 500ms);
+    const std::string psj = t.type("SF!");
+    const long error = std::strtol(psj.c_str() + 3, nullptr, 10);
+    ASSERT_GT(error, 0);
+    t.type("J*\r", 200ms);
     t.type("SP40\r");
-    t.type("SD700\r"); // 200 counts to stop + 547 of following error at V400
+    const long stop = 200; // counts to stop from V400 at A4000
+    t.type("SD" + std::to_string(stop + error - 20) + "\r");
     EXPECT_EQ(t.type("I1000+"), "I1000+#B1" + std::string(kPrompt));
     EXPECT_FALSE(moving(t));
-    t.type("SD800\r");
+    t.type("SD" + std::to_string(stop + error + 20) + "\r");
     EXPECT_EQ(t.type("I1000+\r"), prompted("I1000+"));
 }
 
