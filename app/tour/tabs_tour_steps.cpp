@@ -15,8 +15,11 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QPointer>
+#include <QStatusBar>
 
+#include <algorithm>
 #include <memory>
 
 namespace app {
@@ -66,6 +69,14 @@ void sendKey(QWidget* to, int key, Qt::KeyboardModifiers modifiers) {
     QKeyEvent release(QEvent::KeyRelease, key, modifiers);
     QCoreApplication::sendEvent(to, &release);
 }
+
+// The status bar's keys label says a chord waits for its second key ("^K ...").
+bool chordShown(const MainWindow& window) {
+    const QList<QLabel*> labels = window.findChildren<QLabel*>();
+    return std::any_of(labels.cbegin(), labels.cend(), [](const QLabel* label) {
+        return label->isVisible() && label->width() > 0 && label->text().contains(QLatin1String("^K"));
+    });
+}
 } // namespace
 
 std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& outputDir) {
@@ -96,7 +107,20 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
                              area->applyKeymap(QStringLiteral("classic"));
                              sendKey(editor, Qt::Key_K, Qt::ControlModifier);
                          },
-                     .ready = [tabs, opened] { return opened->size() == 3 && tabs->count() >= 4; },
+                     .ready =
+                         [&window, tabs, opened] {
+                             if (opened->size() != 3 || tabs->count() < 4) return false;
+                             // "Opened <path>" folds the status bar's editor cells away while it shows (a long
+                             // path folds the keys label: StatusBarRoom): the shot is of the chord, not of it.
+                             window.statusBar()->clearMessage();
+                             if (chordShown(window)) return true;
+                             // Focus left the editor (a loaded machine: another window took it) and the pending
+                             // chord went with it: type ^K again, and grab only once it stays shown.
+                             editor::ProgramEditor* editor = tabs->currentEditor();
+                             editor->setFocus();
+                             sendKey(editor, Qt::Key_K, Qt::ControlModifier);
+                             return false;
+                         },
                      .grab = [&window] { return TourShot::of(&window); },
                      .cleanUp = [area] { area->reloadKeymap(); }});
 
