@@ -2,6 +2,7 @@
 // and tests. Grammar in simulator_controls.h; answers "OK", "ERROR <reason>" or the status line.
 #include "simulator_controls.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -77,6 +78,19 @@ std::string statusLine(const SimulatorStatus& s) {
            " master_wave=" + waveText(s.masterWave) + " analog_in_v=" + format(s.analogInput_V) +
            " analog_out_v=" + format(s.analogOutput_V) + " enc_out_counts=" + std::to_string(s.encoderOutput_counts);
 }
+
+// The newest `seconds` of the monitor (all it holds when nullopt), signal last: its text has spaces.
+std::string monitorLine(const MonitorTrace& t, std::optional<double> seconds) {
+    std::size_t first = 0;
+    if (seconds && t.interval_s > 0) {
+        const auto wanted = std::size_t(std::max(0.0, *seconds) / t.interval_s);
+        if (wanted < t.volts.size()) first = t.volts.size() - wanted;
+    }
+    std::string volts;
+    for (std::size_t i = first; i < t.volts.size(); ++i) (volts += i == first ? "" : ",") += format(t.volts[i]);
+    return "interval=" + format(t.interval_s) + " last=" + format(t.lastSample_s) + " volts=" + volts +
+           " signal=" + t.signal;
+}
 } // namespace
 
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line) {
@@ -85,6 +99,14 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
     const std::string& verb = w[0];
     const auto arity = [&](std::size_t n) { return w.size() == n + 1; };
     if (verb == "status" && arity(0)) return statusLine(controls.status());
+    if (verb == "monitor" && w.size() <= 2) {
+        const MonitorTrace trace = controls.analogMonitor();
+        if (trace.volts.empty()) return "ERROR this drive has no analog monitor on the bench";
+        if (w.size() == 1) return monitorLine(trace, std::nullopt);
+        const auto seconds = number(w[1]);
+        if (!seconds) return "ERROR expected a number";
+        return monitorLine(trace, seconds);
+    }
     if (verb == "power-cycle" && arity(0)) {
         controls.powerCycle();
         return "OK";
@@ -157,7 +179,7 @@ std::string runSimulatorCommand(SimulatorControls& controls, std::string_view li
     }
     if (verb == "motor" && arity(1)) return controls.selectMotor(w[1]) ? "OK" : "ERROR unknown motor " + w[1];
     for (const char* known :
-         {"status", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at", "load-torque",
+         {"status", "monitor", "power-cycle", "input", "enable", "motion", "home", "limits", "home-at", "load-torque",
           "load-inertia", "load-coupling", "master-hz", "master-wave", "analog-in", "motor", "feedback"})
         if (verb == known) return "ERROR wrong number of arguments for " + verb;
     return "ERROR unknown command " + verb;

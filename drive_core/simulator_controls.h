@@ -50,6 +50,15 @@ struct SimulatorStatus {
     long long encoderOutput_counts = 0; // quadrature counts the encoder output has emitted (SC750 ENC.OUT)
 };
 
+// What the bench's oscilloscope saw on the drive's analog monitor output (MonitorRecorder): one sample a
+// servo period, oldest first; empty when the drive has no monitor output the bench records.
+struct MonitorTrace {
+    std::string signal;      // what the output carries: "DACMON: VEL.CMD, 1 V/kRPM" or "tach"
+    double interval_s = 0;   // between samples (the servo period)
+    double lastSample_s = 0; // the drive's clock at the newest sample (seconds since power-up)
+    std::vector<float> volts;
+};
+
 class SimulatorControls {
 public:
     virtual ~SimulatorControls() = default;
@@ -87,14 +96,17 @@ public:
     virtual void setFeedbackConnected(bool connected) { (void)connected; }
     // The voltage on the drive's analog input; a drive without one ignores it.
     virtual void setAnalogInput_V(double volts) { (void)volts; }
+    // The newest seconds of the analog monitor output as the bench's oscilloscope recorded them.
+    virtual MonitorTrace analogMonitor() const { return {}; }
 };
 
 // The side channel's text form, one command per line, for servodesk-sim's control socket and for tests:
 //   input N on|off · enable on|off · motion on|off · home on|off · home-at REV · limits POS NEG (on|off)
 //   load-torque NM · load-inertia KGM2 · load-coupling NM_PER_RAD NMS_PER_RAD · load-coupling off · master-hz HZ ·
 //   master-wave sine|square|triangle AMP_HZ FREQ_HZ · master-wave off · analog-in V · motor NAME · feedback on|off ·
-//   power-cycle · status
-// Returns "OK", "ERROR <reason>", or for `status` one line of key=value pairs.
+//   power-cycle · status · monitor [SECONDS]
+// Returns "OK", "ERROR <reason>", for `status` one line of key=value pairs, for `monitor` one line
+// "signal=<text> interval=<s> last=<s> volts=<v>,<v>,..." of the newest SECONDS (all held if none).
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
 
 } // namespace drive_core

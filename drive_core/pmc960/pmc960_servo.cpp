@@ -87,6 +87,7 @@ void Pmc960Servo::tick(Loop loop, double psj_counts, double referenceVelocity_cp
     const physics::MotorParameters& motor = m_plant.motor();
     const double speed = m_plant.motorSpeed_radPerS();
     m_tach_V += m_tachAlpha * (m_tach_VperRadS * speed - m_tach_V); // the filter runs in every mode
+    m_tachScope.push(m_tach_V, double(++m_periods) * kPeriod_s);
     double current_A = 0;
     switch (loop) {
     case Loop::Off: // S9: the armature shorted through the brake resistor

@@ -5,6 +5,7 @@
 // DECISIONS.md ("Servo physics", S1-S12). Steps in fixed periods; never reads a clock, never allocates.
 #pragma once
 
+#include "drive_core/monitor_recorder.h"
 #include "drive_core/physics/plant.h"
 
 #include <cstdint>
@@ -70,6 +71,9 @@ public:
     double feedForwardShare() const;
     // ICMD in volts (10 V = the servodrive's peak current).
     double currentCommand_V() const { return m_icmd_V; }
+    // The tachometer signal after TGAIN (UA5A's output, the test point of §4.8's tuning), a sample a period,
+    // as the bench's oscilloscope recorded it; its clock counts the servo's periods.
+    const MonitorRecorder& tachScope() const { return m_tachScope; }
 
 private:
     double countsPerRad() const;
@@ -88,6 +92,8 @@ private:
     double m_icmd_V = 0;
     double m_tachAlpha = 0; // the tach filter's step response over a period
     double m_tach_V = 0;    // the filtered tach voltage
+    MonitorRecorder m_tachScope{kPeriod_s};
+    std::int64_t m_periods = 0;
 };
 
 } // namespace drive_core::pmc960

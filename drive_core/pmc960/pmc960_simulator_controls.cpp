@@ -6,6 +6,7 @@
 #include "drive_core/physics/motor_parameters.h"
 
 #include <algorithm>
+#include <chrono>
 #include <numbers>
 
 namespace drive_core::pmc960 {
@@ -75,6 +76,12 @@ bool Pmc960SimulatorControls::selectMotor(std::string_view name) {
 
 void Pmc960SimulatorControls::powerCycle() {
     m_drive.powerUp();
+}
+
+MonitorTrace Pmc960SimulatorControls::analogMonitor() const {
+    MonitorTrace trace = m_drive.state().motion.servo().tachScope().trace("tach: the tachometer signal after TGAIN, V");
+    trace.lastSample_s = std::chrono::duration<double>(m_drive.now()).count(); // the drive's clock, to a period
+    return trace;
 }
 
 SimulatorStatus Pmc960SimulatorControls::status() const {

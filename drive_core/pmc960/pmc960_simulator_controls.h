@@ -30,6 +30,8 @@ public:
     bool selectMotor(std::string_view name) override;
     void powerCycle() override;
     SimulatorStatus status() const override;
+    // The tachometer signal (after TGAIN) the manual's tuning watches on an oscilloscope (§4.8, L584-L632).
+    MonitorTrace analogMonitor() const override;
 
 private:
     Pmc960Drive& m_drive;

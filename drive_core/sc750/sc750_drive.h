@@ -6,6 +6,7 @@
 
 #include "drive_core/bds5/bds5_uart.h"
 #include "drive_core/drive.h"
+#include "drive_core/monitor_recorder.h"
 #include "sc750_monitor.h"
 #include "sc750_motion.h"
 #include "sc750_servo.h"
@@ -61,6 +62,8 @@ public:
     bool selectMotor(std::string_view name) override;
     void powerCycle() override { powerUp(); }
     SimulatorStatus status() const override;
+    // DACMON as the bench's oscilloscope saw it, a sample a tick, named after the DACMAP signal it carried.
+    MonitorTrace analogMonitor() const override;
 
     // The S1 address switch, read at power-up (255 = RS-232, no multidrop).
     void setAxisAddress(int address) { m_axisSwitch = address; }
@@ -162,6 +165,7 @@ private:
     double m_analogIn_V = 0;         // the bench's voltage on the analog input
     double m_analogInFiltered_V = 0; // ANALOG.IN, after ADF0
     double m_dacmon_V = 0;           // DACMON = the analog output, after DMF0
+    MonitorRecorder m_dacmonScope{kTick_s}; // the bench's oscilloscope on DACMON (kept over a power cycle)
     double m_encoderOut_counts = 0;  // emitted by the encoder output (ENC.OUT > 0), quadrature counts
     double m_lastShaft_counts = 0;
     bool m_configured = true;

@@ -4,7 +4,9 @@
 #include "sc750_drive_index.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace drive_core::sc750 {
@@ -30,7 +32,7 @@ double Sc750Drive::dacSignal_V() {
     const double pcmd = m_motion.positionCommand_counts();
     double value = 0;
     switch (map) {
-    case 1: value = m_servo.averageVelocity_cps() / kCpsPerRpm; break;
+    case 1: value = m_servo.velocity_cps() / kCpsPerRpm; break; // the loop's resolver speed (DECISIONS 54)
     case 2: value = m_servo.velocityCommand_cps() / kCpsPerRpm; break;
     case 3: value = m_servo.velocityError_cps() / kCpsPerRpm; break;
     case 4: value = m_servo.filteredVelocityError_cps() / kCpsPerRpm; break;
@@ -57,9 +59,19 @@ void Sc750Drive::analogTick() {
     const double sampled = std::clamp(m_analogIn_V, -12.0, 12.0) + num(ix().adoffset);
     m_analogInFiltered_V = std::clamp(lowPass(m_analogInFiltered_V, sampled, num(ix().adf0)), -12.0, 12.0);
     m_dacmon_V = lowPass(m_dacmon_V, dacSignal_V(), num(ix().dmf0));
+    m_dacmonScope.push(m_dacmon_V, std::chrono::duration<double>(m_now).count());
     const double lines = num(ix().encout);
     if (lines > 0) m_encoderOut_counts += (m_actual_counts - m_lastShaft_counts) * 4.0 * lines / kCountsPerRev;
     m_lastShaft_counts = m_actual_counts;
+}
+
+MonitorTrace Sc750Drive::analogMonitor() const {
+    const int map = std::clamp(int(std::lround(num(ix().dacmap))), 0, int(cat::dacMap().size()) - 1);
+    const cat::DacMapInfo& info = cat::dacMap()[std::size_t(map)];
+    const double gain = map == 0 ? 1.0 : num(ix().dmgain);
+    char scale[64];
+    std::snprintf(scale, sizeof scale, "%g V/%s", info.voltsPerUnit * gain, std::string(info.unit).c_str());
+    return m_dacmonScope.trace("DACMON: " + std::string(info.mnemonic) + ", " + scale);
 }
 
 // Source k of the catalog's table (0 CCWINH, 1 CCWOT, 2 CHAR, 3 CWINH, 4 CWOT, 5 DISABLE, 6 FAULT,

@@ -5,6 +5,8 @@
 // simulated time.
 #include "pmc960_test_drive.h"
 
+#include "drive_core/simulator_controls.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -193,6 +195,39 @@ TEST(Pmc960Physics, VelocityRiseTimeFollowsVelocityGain) {
     EXPECT_GT(medium, 1.5 * fast);
     // More inertia on the bench: the same gain is slower (the manual retunes with the load attached).
     EXPECT_GT(velocityStep(8, 20e-4).rise_s, 3 * medium);
+}
+
+// 4.8.1: "Observe the tachometer signal": the bench's oscilloscope on it (DECISIONS S13) shows the same step as
+// the motor's speed — proportional to it, at the servo period, with the same rise time — and a
+// "monitor" line of the side channel carries the newest samples.
+TEST(Pmc960Monitor, TachTraceShowsTheVelocityStep) {
+    TestDrive t;
+    t.writeEnable();
+    t.type("A65535\r");
+    setTable(t, "TGV", 8);
+    setTable(t, "TGF", 40);
+    t.type("SM1\r");
+    t.type("J41+");
+    const Trace trace = record(t, 300ms);
+    const drive_core::MonitorTrace tach = t.drive.controls()->analogMonitor();
+    EXPECT_DOUBLE_EQ(tach.interval_s, 0.0005);
+    ASSERT_GE(tach.volts.size(), 600u);
+    const std::vector<double> volts(tach.volts.end() - 600, tach.volts.end()); // the 300 ms just recorded
+    const double finalVolts = volts.back(), finalSpeed = trace.velocity.back();
+    ASSERT_GT(finalVolts, 0.05);
+    const double speedRise = riseTime(trace.velocity, 0, finalSpeed);
+    const double tachRise = riseTime(volts, 0, finalVolts) * 2; // riseTime counts 250 us samples; these are 500 us
+    EXPECT_NEAR(tachRise, speedRise, 0.2 * speedRise + 0.001);
+    // Twice the speed, twice the volts: the tach is proportional.
+    t.type("J82+");
+    const Trace faster = record(t, 300ms);
+    const double doubled = t.drive.controls()->analogMonitor().volts.back();
+    EXPECT_NEAR(doubled / finalVolts, faster.velocity.back() / finalSpeed, 0.02);
+    const std::string line = drive_core::runSimulatorCommand(*t.drive.controls(), "monitor 0.01");
+    EXPECT_TRUE(line.starts_with("interval=0.0005 ")) << line;
+    const auto volts0 = line.find("volts="), signal = line.find(" signal=tach");
+    ASSERT_NE(signal, std::string::npos) << line;
+    EXPECT_EQ(std::count(line.begin() + long(volts0), line.begin() + long(signal), ','), 19) << "20 samples in 10 ms";
 }
 
 // 4.8.1 and 4.8.3: the manual's criteria can be met — raising VLGAIN from 1 finds a velocity rise of 3-15 ms

@@ -161,5 +161,31 @@ TEST(Sc750Physics, VelocityStepRisesFasterWithMoreKvp) {
     EXPECT_LT(fast, 0.75 * slow);
 }
 
+// The bench's oscilloscope on DACMON (DECISIONS 54): DACMAP 1 shows the loop's resolver speed at the manual's
+// scale (1 V per kRPM, L2147-L2161) every tick, with the speed's own rise time; `monitor` gives it as text.
+TEST(Sc750Monitor, DacmonTraceShowsTheVelocityStepAtTheManualsScale) {
+    Servo s({{"BLKTYPE", "1"}, {"KVI", "0"}, {"ADF0", "10000"}, {"DACMAP", "1"}});
+    s.run(0.05);
+    s.b.drive.controls()->setAnalogInput_V(0.1); // 100 RPM (1 kRPM/V, L1948)
+    const std::vector<double> speed = s.record("RVEL", 0.1);
+    const drive_core::MonitorTrace dac = s.b.drive.controls()->analogMonitor();
+    EXPECT_DOUBLE_EQ(dac.interval_s, 0.000427);
+    EXPECT_EQ(dac.signal, "DACMON: VELOCITY, 1 V/kRPM");
+    ASSERT_GE(dac.volts.size(), speed.size());
+    const std::vector<double> volts(dac.volts.end() - long(speed.size()), dac.volts.end());
+    const double finalRpm = mean({speed.end() - 50, speed.end()});
+    EXPECT_NEAR(mean({volts.end() - 50, volts.end()}), finalRpm / 1000.0, 0.002);
+    const auto rise = [](const std::vector<double>& v, double final) {
+        const auto at = [&](double f) { return std::find_if(v.begin(), v.end(), [&](double x) { return x >= f * final; }) - v.begin(); };
+        return double(at(0.9) - at(0.1)) * 0.000427;
+    };
+    const double speedRise = rise(speed, finalRpm), dacRise = rise(volts, finalRpm / 1000.0);
+    ASSERT_GT(speedRise, 0);
+    EXPECT_NEAR(dacRise, speedRise, 0.2 * speedRise + 0.000427);
+    const std::string line = drive_core::runSimulatorCommand(*s.b.drive.controls(), "monitor 0.01");
+    EXPECT_TRUE(line.starts_with("interval=0.000427 ")) << line;
+    EXPECT_TRUE(line.ends_with(" signal=DACMON: VELOCITY, 1 V/kRPM")) << line;
+}
+
 } // namespace
 } // namespace sc750_test
