@@ -13,9 +13,22 @@ DriveTimeout::DriveTimeout(const Link& link, QObject* parent) : QObject(parent),
     connect(&m_timer, &QTimer::timeout, this, &DriveTimeout::onWallTimeout);
 }
 
+// SERVODESK_TIMEOUT_SCALE=N multiplies every time-out on a port without a drive clock: for a drive behind a
+// slow serial device server, and for tests that reach a simulator process through a pty on a loaded machine
+// (the process may not run for seconds; tests/app/cli_test.py). 1 when unset or not a number >= 1.
+int DriveTimeout::scaled(int ms) {
+    static const double scale = [] {
+        bool ok = false;
+        const double s = qEnvironmentVariable("SERVODESK_TIMEOUT_SCALE").toDouble(&ok);
+        return ok && s >= 1 ? s : 1.0;
+    }();
+    return int(std::min(double(ms) * scale, 3'600'000.0));
+}
+
 void DriveTimeout::start(int ms) {
     ++m_generation;
     m_active = true;
+    if (!m_link.driveClockMs()) ms = scaled(ms);
     m_ms = ms;
     m_startDriveMs = m_link.driveClockMs().value_or(0);
     m_wall.start();

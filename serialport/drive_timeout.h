@@ -22,6 +22,8 @@ public:
     explicit DriveTimeout(const Link& link, QObject* parent = nullptr);
 
     void start(int ms);
+    // ms times SERVODESK_TIMEOUT_SCALE (a real port's time-outs only; see drive_timeout.cpp).
+    static int scaled(int ms);
     void stop();
     bool isActive() const { return m_active; }
 

@@ -157,10 +157,10 @@ void Sc750DriveSession::download(const QString& programText) {
             r.driveHolds = QStringLiteral("its old program (the drive checks the CRC before replacing it)");
             return finishTransfer(r);
         }
-        const std::uint32_t crc = drive_core::sc750::crc32(
+        const std::uint32_t sourceCrc = drive_core::sc750::crc32(
             std::span(reinterpret_cast<const std::uint8_t*>(m_source.constData()), std::size_t(m_source.size())));
         const QString payload =
-            QStringLiteral("%1,%2").arg(m_source.size()).arg(crc, 8, 16, QLatin1Char('0')).toUpper();
+            QStringLiteral("%1,%2").arg(m_source.size()).arg(sourceCrc, 8, 16, QLatin1Char('0')).toUpper();
         request('T', payload, [this](const Sc750Reply&) { storeSource(0); }, [this](const QString& why) {
             TransferResult r;
             r.message = QStringLiteral("The program is loaded, but its source was not stored: %1").arg(why);

@@ -71,6 +71,20 @@ void SimulatorLink::control(std::function<void(drive_core::SimulatorControls&)> 
         Qt::QueuedConnection);
 }
 
+void SimulatorLink::readMonitor(std::function<void(const drive_core::MonitorTrace&)> done) {
+    const quint64 generation = m_generation;
+    // The worker runs while this link lives (the destructor waits for its thread), so `this` is safe to post
+    // to; a call still queued when the link is deleted is dropped with it.
+    control([this, generation, done = std::move(done)](drive_core::SimulatorControls& bench) {
+        QMetaObject::invokeMethod(
+            this,
+            [this, generation, done, trace = bench.analogMonitor()] {
+                if (m_open && generation == m_generation) done(trace);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
 QString SimulatorLink::description() const {
     return tr("Simulated %1").arg(QString::fromLatin1(drive_core::familyName(m_family)).toUpper());
 }

@@ -50,6 +50,10 @@ public:
     // The simulator's bench (inputs, load, motor, power), not its serial port: the change runs in the
     // worker thread before the drive's next step. Ignored while the link is closed. GUI thread.
     void control(std::function<void(drive_core::SimulatorControls&)> change);
+    // The bench's oscilloscope: the drive's analog monitor output as recorded, newest last
+    // (SimulatorControls::analogMonitor), handed to `done` in the GUI thread; empty volts when the drive has
+    // none. Not called when the link is closed (or closes first).
+    void readMonitor(std::function<void(const drive_core::MonitorTrace&)> done);
     // The latest bench snapshot (also sent by simulatorStatus() every kStatusIntervalMs while open).
     drive_core::SimulatorStatus lastStatus() const { return m_status; }
     static constexpr int kStatusIntervalMs = 100;

@@ -17,6 +17,11 @@
 class QDockWidget;
 class QMenu;
 
+namespace serialport {
+class DriveSession;
+class Link;
+} // namespace serialport
+
 namespace app {
 
 class ErrorSource;
@@ -37,6 +42,10 @@ public:
     virtual bool isConnected() const = 0;
     // For the status bar: "SC750 axis 255, Ready" and similar.
     virtual QString statusText() const = 0;
+    // The family-neutral session and its link while connected (nullptr otherwise): the generic tools (the
+    // tuning panel) work through these.
+    virtual serialport::DriveSession* driveSession() const { return nullptr; }
+    virtual serialport::Link* link() const { return nullptr; }
     // The family's errors for the Error Log dock (owned by the workspace), or nullptr.
     virtual ErrorSource* errorSource() const { return nullptr; }
     // The family's sample program, a resource (":/samples/hello.bas"): the first tab when the IDE starts

@@ -1,6 +1,8 @@
 // Pmc960Workspace: link and session lifetime, the MPL menu, and the docks that follow the session.
 #include "pmc960_workspace.h"
 
+#include "tuning/family_tuning_panel.h"
+
 #include "pmc960_parameter_dock.h"
 #include "pmc960_program_transfer.h"
 #include "pmc960_routine_runner.h"
@@ -25,7 +27,7 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     : FamilyWorkspace(&window), m_window(window), m_transfer(new Pmc960ProgramTransfer(*this)),
       m_status(new Pmc960StatusDock(&window)), m_parameters(new Pmc960ParameterDock(&window)),
       m_menu(new QMenu(tr("&MPL"), &window)), m_errors(new Pmc960ErrorSource(*this)),
-      m_runner(new Pmc960RoutineRunner(*this)) {
+      m_runner(new Pmc960RoutineRunner(*this)), m_tuning(makeFamilyTuningDock(window, family())) {
     connect(&m_reconnector, &LinkReconnector::lost, this, [this](const QString& description) {
         emit message(tr("The connection to the PMC-960 was lost (%1). Reconnecting every second; nothing in the "
                         "editors is affected. Drive > Disconnect stops trying.")
@@ -53,6 +55,7 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     m_menu->addAction(m_parameters->toggleViewAction());
     m_menu->addAction(tr("&Watch Variables..."), this, &Pmc960Workspace::watchVariables)
         ->setStatusTip(tr("A rolling chart of position, following error, velocity and distance to go"));
+    m_menu->addAction(m_tuning.action); // §4.8's procedure: gains, a test index, the tach on the bench's scope
 
     connect(m_runner, &Pmc960RoutineRunner::programFailed, m_errors, &Pmc960ErrorSource::addProgramError);
     connect(m_transfer, &Pmc960ProgramTransfer::busyChanged, this, [this](bool busy) {
@@ -74,6 +77,7 @@ Pmc960Workspace::~Pmc960Workspace() {
     }
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
+    if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
 }
 
 Pmc960RunDialog* Pmc960Workspace::runRoutine() {
@@ -92,7 +96,7 @@ QList<QMenu*> Pmc960Workspace::menus() const {
 }
 
 QList<QDockWidget*> Pmc960Workspace::docks() const {
-    return {m_status, m_parameters};
+    return {m_status, m_parameters, m_tuning.dock};
 }
 
 QAction* Pmc960Workspace::action(const QString& text) const {
@@ -108,7 +112,8 @@ void Pmc960Workspace::activate(const ConnectionChoice& choice) {
     deactivate();
     m_link = choice.makeLink();
     m_linkText = m_link->description();
-    m_session = std::make_unique<serialport::Pmc960Session>(*m_link);
+    m_drive = std::make_unique<serialport::Pmc960DriveSession>(*m_link);
+    m_session = &m_drive->pmc960();
     connect(m_link.get(), &serialport::Link::opened, this, &Pmc960Workspace::onOpened);
     connect(m_link.get(), &serialport::Link::errorOccurred, this, &Pmc960Workspace::onLinkError);
     connect(m_link.get(), &serialport::Link::closed, this, [this] {
@@ -116,15 +121,16 @@ void Pmc960Workspace::activate(const ConnectionChoice& choice) {
         m_connected = false;
         m_status->setSession(nullptr);
         m_parameters->setSession(nullptr);
+        if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
         m_runner->reset();
         updateActions();
         emit statusChanged();
     });
     m_reconnector.watch(m_link.get()); // after the handler above: lost is said once the state shows it
-    connect(m_session.get(), &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
-    connect(m_session.get(), &serialport::Pmc960Session::shownReceived, this, &Pmc960Workspace::terminalReceived);
-    connect(m_session.get(), &serialport::Pmc960Session::shownReceived, m_runner, &Pmc960RoutineRunner::onShown);
-    connect(m_session.get(), &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
+    connect(m_session, &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
+    connect(m_session, &serialport::Pmc960Session::shownReceived, this, &Pmc960Workspace::terminalReceived);
+    connect(m_session, &serialport::Pmc960Session::shownReceived, m_runner, &Pmc960RoutineRunner::onShown);
+    connect(m_session, &serialport::Pmc960Session::asyncError, this, [this](int code, const QString&) {
         if (m_runner->explainRefusal(code)) return; // said with what to do about the routine
         emit message(tr("PMC-960: %1").arg(Pmc960ProgramTransfer::describeError(code)));
     });
@@ -150,8 +156,9 @@ void Pmc960Workspace::onOpened() {
     if (m_connected) return;
     // (After a lost connection too: the session asks for the prompt again, the docks poll again.)
     m_connected = true;
-    m_status->setSession(m_session.get());
-    m_parameters->setSession(m_session.get());
+    m_status->setSession(m_session);
+    m_parameters->setSession(m_session);
+    if (m_tuning.panel) m_tuning.panel->attach(m_drive.get(), m_link.get());
     updateActions();
     emit statusChanged();
     emit message(tr("Connected to %1").arg(m_linkText));
@@ -177,6 +184,7 @@ void Pmc960Workspace::deactivate() {
     m_connected = false;
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
+    if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
     m_runner->reset();
     m_transfer->forgetProgram(); // another connection may reach another controller
     if (m_session) m_session->disconnect(this);
@@ -184,7 +192,8 @@ void Pmc960Workspace::deactivate() {
         m_link->disconnect(this);
         m_link->close();
     }
-    m_session.reset();
+    m_session = nullptr;
+    m_drive.reset();
     m_link.reset();
     updateActions();
     if (was) emit statusChanged();

@@ -6,8 +6,9 @@
 
 #include "family_workspace.h"
 #include "link_reconnector.h"
+#include "tuning/family_tuning_dock.h"
 
-#include "serialport/pmc960_session.h"
+#include "serialport/pmc960_drive_session.h"
 
 #include <QPointer>
 
@@ -45,9 +46,10 @@ public:
     bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 
     // The session while the link is open, else nullptr.
-    serialport::Pmc960Session* session() const { return m_connected ? m_session.get() : nullptr; }
+    serialport::Pmc960Session* session() const { return m_connected ? m_session : nullptr; }
+    serialport::DriveSession* driveSession() const override { return m_connected ? m_drive.get() : nullptr; }
     // The link while connected (the simulator's bench for the tour and tests), else nullptr.
-    serialport::Link* link() const { return m_connected ? m_link.get() : nullptr; }
+    serialport::Link* link() const override { return m_connected ? m_link.get() : nullptr; }
     // The link closed by itself and is reopened every second (LinkReconnector) until the device is back.
     bool isReconnecting() const { return m_reconnector.isReconnecting(); }
     MainWindow& window() const { return m_window; }
@@ -79,7 +81,8 @@ private:
 
     MainWindow& m_window;
     std::unique_ptr<serialport::Link> m_link;
-    std::unique_ptr<serialport::Pmc960Session> m_session;
+    std::unique_ptr<serialport::Pmc960DriveSession> m_drive; // the family-neutral contract over m_session
+    serialport::Pmc960Session* m_session = nullptr;
     Pmc960ProgramTransfer* m_transfer;
     Pmc960StatusDock* m_status;
     Pmc960ParameterDock* m_parameters;
@@ -87,6 +90,7 @@ private:
     Pmc960ErrorSource* m_errors;
     Pmc960RoutineRunner* m_runner;
     QPointer<WatchView> m_watch;
+    FamilyTuningDock m_tuning;
     QString m_linkText;
     bool m_connected = false;
     LinkReconnector m_reconnector;

@@ -1,6 +1,8 @@
 // Sc750Workspace: link and session lifetime, the Motion Dialogue menus, editor hooks and the status line.
 #include "sc750_workspace.h"
 
+#include "tuning/family_tuning_panel.h"
+
 #include "errors/sc750_error_source.h"
 
 #include "sc750_controller_menu.h"
@@ -32,7 +34,8 @@ namespace app {
 
 Sc750Workspace::Sc750Workspace(MainWindow& window)
     : FamilyWorkspace(&window), m_window(window), m_debugger(new Sc750Debugger(*this)),
-      m_output(new Sc750OutputDock(&window)), m_variables(new Sc750VariablesDock(*this, &window)) {
+      m_output(new Sc750OutputDock(&window)), m_variables(new Sc750VariablesDock(*this, &window)),
+      m_tuning(makeFamilyTuningDock(window, family())) {
     createMenus();
     m_errors = new Sc750ErrorSource(*this);
     m_cursorLabel = new QLabel(&window);
@@ -85,7 +88,8 @@ Sc750Workspace::Sc750Workspace(MainWindow& window)
 Sc750Workspace::~Sc750Workspace() {
     // The window's widgets are going: nothing from the closing link may reach them.
     if (m_link) m_link->disconnect(this);
-    m_session.reset(); // it keeps a reference to the link
+    m_session = nullptr;
+    m_drive.reset(); // it keeps a reference to the link
     m_link.reset();
 }
 
@@ -94,7 +98,7 @@ QList<QMenu*> Sc750Workspace::menus() const {
 }
 
 QList<QDockWidget*> Sc750Workspace::docks() const {
-    return {m_output, m_variables};
+    return {m_output, m_variables, m_tuning.dock};
 }
 
 void Sc750Workspace::createMenus() {
@@ -130,6 +134,7 @@ void Sc750Workspace::createMenus() {
     menu->addAction(tr("Real &Time Function Call..."), this, &Sc750Workspace::showFunctionCall);
     menu->addAction(tr("&Watch Variables..."), this, &Sc750Workspace::watchVariables)
         ->setStatusTip(tr("A rolling chart of POSITION, VELOCITY, POS.ERROR... read while the program runs"));
+    menu->addAction(m_tuning.action); // the gains, a test move and DACMON on the bench's oscilloscope
     m_optionsMenu = new Sc750ControllerMenu(*this, &m_window);
 }
 
@@ -161,23 +166,25 @@ QWidget* Sc750Workspace::showFunctionCall() {
 void Sc750Workspace::activate(const ConnectionChoice& choice) {
     deactivate();
     m_link = choice.makeLink();
-    m_session = std::make_unique<serialport::Sc750Session>(*m_link);
+    m_drive = std::make_unique<serialport::Sc750DriveSession>(*m_link);
+    m_session = &m_drive->sc750();
     m_linkText = m_link->description();
-    connect(m_session.get(), &serialport::Sc750Session::finished, this,
+    connect(m_session, &serialport::Sc750Session::finished, this,
             [this](quint64 id, const serialport::Sc750Reply& reply) {
                 const auto handlers = m_waiting.take(id);
                 if (handlers.first) handlers.first(reply);
             });
-    connect(m_session.get(), &serialport::Sc750Session::failed, this, [this](quint64 id, const QString& why) {
+    connect(m_session, &serialport::Sc750Session::failed, this, [this](quint64 id, const QString& why) {
         const auto handlers = m_waiting.take(id);
         if (handlers.second) handlers.second(why);
         else emit message(tr("SC750: %1").arg(why));
     });
-    connect(m_session.get(), &serialport::Sc750Session::programOutput, m_output, &Sc750OutputDock::display);
+    connect(m_session, &serialport::Sc750Session::programOutput, m_output, &Sc750OutputDock::display);
     connect(m_link.get(), &serialport::Link::opened, this, &Sc750Workspace::onOpened);
     connect(m_link.get(), &serialport::Link::errorOccurred, this, &Sc750Workspace::onLinkError);
     connect(m_link.get(), &serialport::Link::closed, this, [this] {
         m_connected = false;
+        if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
         updateActions();
         emit statusChanged();
     });
@@ -189,6 +196,7 @@ void Sc750Workspace::activate(const ConnectionChoice& choice) {
 void Sc750Workspace::onOpened() {
     m_connected = true;
     m_debugger->attachSession();
+    if (m_tuning.panel) m_tuning.panel->attach(m_drive.get(), m_link.get());
     if (m_axis != 255) m_session->logOn(m_axis);
     send('V', {}, [this](const serialport::Sc750Reply& reply) {
         const QStringList parts = reply.payload.split(QLatin1Char(','));
@@ -217,7 +225,9 @@ void Sc750Workspace::deactivate() {
     m_waiting.clear();
     const bool wasConnected = m_connected;
     m_connected = false;
-    m_session.reset();
+    if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
+    m_session = nullptr;
+    m_drive.reset();
     m_link->disconnect(this);
     m_link->close();
     m_link.reset();

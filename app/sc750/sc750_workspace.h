@@ -6,8 +6,9 @@
 
 #include "family_workspace.h"
 #include "link_reconnector.h"
+#include "tuning/family_tuning_dock.h"
 
-#include "serialport/sc750_session.h"
+#include "serialport/sc750_drive_session.h"
 
 #include <QHash>
 #include <QPointer>
@@ -50,7 +51,9 @@ public:
     QString sampleProgram() const override; // hello.bas
 
     // The session while the link is open, else nullptr.
-    serialport::Sc750Session* session() const { return m_connected ? m_session.get() : nullptr; }
+    serialport::Sc750Session* session() const { return m_connected ? m_session : nullptr; }
+    serialport::DriveSession* driveSession() const override { return m_connected ? m_drive.get() : nullptr; }
+    serialport::Link* link() const override { return m_connected ? m_link.get() : nullptr; }
     // The link closed by itself and is reopened every second (LinkReconnector) until the device is back.
     bool isReconnecting() const { return m_reconnector.isReconnecting(); }
     Sc750Debugger& debugger() const { return *m_debugger; }
@@ -87,7 +90,8 @@ private:
 
     MainWindow& m_window;
     std::unique_ptr<serialport::Link> m_link;
-    std::unique_ptr<serialport::Sc750Session> m_session;
+    std::unique_ptr<serialport::Sc750DriveSession> m_drive; // the family-neutral contract over m_session
+    serialport::Sc750Session* m_session = nullptr;
     Sc750Debugger* m_debugger;
     Sc750OutputDock* m_output;
     Sc750VariablesDock* m_variables;
@@ -99,6 +103,7 @@ private:
     QPointer<editor::ProgramEditor> m_editor;
     QHash<quint64, std::pair<Done, Failed>> m_waiting;
     QPointer<WatchView> m_watch;
+    FamilyTuningDock m_tuning;
     QString m_linkText;
     int m_axis = 255;
     bool m_connected = false;

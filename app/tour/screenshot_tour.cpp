@@ -16,6 +16,7 @@
 #include "math_trigger_tour_steps.h"
 #include "cursors_xy_tour_steps.h"
 #include "sc750_tour_steps.h"
+#include "tuning_tour_steps.h"
 #include "pmc960_tour_steps.h"
 #include "shot_facts.h"
 
@@ -102,6 +103,7 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     for (Step& step : docksTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : sc750TourSteps(m_window)) steps.push_back(std::move(step)); // last: it switches family
     for (Step& step : pmc960TourSteps(m_window)) steps.push_back(std::move(step)); // switches family too
+    for (Step& step : tuningTourSteps(m_window)) steps.push_back(std::move(step));  // each family, then the BDS5
     return steps;
 }
 

@@ -41,8 +41,18 @@ int Bds5Recorder::start(int intervals, int periodMs, const std::vector<std::stri
     m_periodMs = periodMs;
     m_names = names;
     m_samples.clear();
-    m_sinceSample = std::chrono::milliseconds(periodMs); // the first sample is taken at once
+    // The first sample is taken at once, as RECORD runs: a command typed right after it (the trigger) can
+    // never reach the first sample, however soon it arrives (issue 23: with an unpaced wire a J 1000 that
+    // came within the same servo period showed in sample 0).
+    takeSample(vars);
+    m_sinceSample = Microseconds{0};
     return 0;
+}
+
+void Bds5Recorder::takeSample(const Bds5VariableStore& vars) {
+    std::vector<std::int32_t> sample;
+    for (const std::string& name : m_names) sample.push_back(vars.read(name).value_or(0));
+    m_samples.push_back(std::move(sample));
 }
 
 // Every servo period: no fuzzing coverage, like the rest of the tick (tests/fuzz).
@@ -51,9 +61,7 @@ SERVODESK_NO_COVERAGE void Bds5Recorder::step(Microseconds dt, const Bds5Variabl
     m_sinceSample += dt;
     if (m_sinceSample < std::chrono::milliseconds(m_periodMs)) return;
     m_sinceSample -= std::chrono::milliseconds(m_periodMs);
-    std::vector<std::int32_t> sample;
-    for (const std::string& name : m_names) sample.push_back(vars.read(name).value_or(0));
-    m_samples.push_back(std::move(sample));
+    takeSample(vars);
 }
 
 std::optional<std::string> Bds5Recorder::play() const {

@@ -34,6 +34,8 @@ public:
     std::optional<std::string> play() const;
 
 private:
+    void takeSample(const Bds5VariableStore& vars);
+
     bool m_started = false;
     int m_intervals = 0;
     int m_periodMs = 1;

@@ -79,7 +79,7 @@ void Pmc960SimulatorControls::powerCycle() {
 }
 
 MonitorTrace Pmc960SimulatorControls::analogMonitor() const {
-    MonitorTrace trace = m_drive.state().motion.servo().tachScope().trace("tach: the tachometer signal after TGAIN, V");
+    MonitorTrace trace = m_drive.state().motion.servo().tachScope().trace("tach (after TGAIN)");
     trace.lastSample_s = std::chrono::duration<double>(m_drive.now()).count(); // the drive's clock, to a period
     return trace;
 }

@@ -225,7 +225,7 @@ TEST(Pmc960Monitor, TachTraceShowsTheVelocityStep) {
     EXPECT_NEAR(doubled / finalVolts, faster.velocity.back() / finalSpeed, 0.02);
     const std::string line = drive_core::runSimulatorCommand(*t.drive.controls(), "monitor 0.01");
     EXPECT_TRUE(line.starts_with("interval=0.0005 ")) << line;
-    const auto volts0 = line.find("volts="), signal = line.find(" signal=tach");
+    const auto volts0 = line.find("volts="), signal = line.find(" signal=tach (after TGAIN)");
     ASSERT_NE(signal, std::string::npos) << line;
     EXPECT_EQ(std::count(line.begin() + long(volts0), line.begin() + long(signal), ','), 19) << "20 samples in 10 ms";
 }

@@ -1,0 +1,210 @@
+// Tuning the SC750 and the PMC-960 in the IDE (issue 18): the Tuning Panel of each family reads the gains from
+// the simulated drive, runs its manual's test move, and shows the response the bench's oscilloscope saw on the
+// analog monitor output (SC750 DACMON at DACMAP 1, the PMC-960's tach) with its measurements; a gain raised
+// makes the next run faster, and undo puts the earlier run's gains back on the drive.
+#include "app/main_window.h"
+#include "app/pmc960/pmc960_workspace.h"
+#include "app/sc750/sc750_workspace.h"
+#include "app/scope/scope_view.h"
+#include "app/tuning/family_tuning_panel.h"
+
+#include "scope/scope_plot.h"
+
+#include <qcustomplot.h>
+
+#include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QMenu>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+
+#include <algorithm>
+
+using app::FamilyTuningPanel;
+using app::MainWindow;
+using drive_core::DriveFamily;
+
+namespace {
+constexpr int kTimeoutMs = 60000; // a loaded machine stalls; the runs themselves are under a second of drive time
+
+QDockWidget* tuningDock(app::FamilyWorkspace& ws) {
+    for (QDockWidget* dock : ws.docks())
+        if (dock->objectName().endsWith(QLatin1String("TuningDock"))) return dock;
+    return nullptr;
+}
+
+QPushButton* button(QWidget* panel, const QString& text) {
+    for (QPushButton* b : panel->findChildren<QPushButton*>())
+        if (b->text() == text) return b;
+    return nullptr;
+}
+
+// Opens the family's Tuning Panel from its menu and waits until the gains are read.
+FamilyTuningPanel* openPanel(MainWindow& window, app::FamilyWorkspace& ws, const QString& gain) {
+    QDockWidget* dock = tuningDock(ws);
+    if (!dock) return nullptr;
+    QAction* action = nullptr;
+    for (QMenu* menu : ws.menus())
+        for (QAction* a : menu->actions())
+            if (a->text() == QStringLiteral("Tuning &Panel")) action = a;
+    if (!action) return nullptr;
+    action->trigger();
+    if (!dock->isVisible()) return nullptr;
+    auto* panel = qobject_cast<FamilyTuningPanel*>(dock->widget());
+    if (!panel) return nullptr;
+    if (!QTest::qWaitFor([&] { return panel->gainMark(gain) == QStringLiteral("\u2713"); }, kTimeoutMs)) return nullptr;
+    Q_UNUSED(window);
+    return panel;
+}
+
+// Runs once and waits for the run's row; returns that run.
+const app::FamilyTuningRun* runOnce(FamilyTuningPanel& panel) {
+    const int rows = panel.runsTable()->rowCount();
+    button(&panel, QStringLiteral("Run Once"))->click();
+    if (!QTest::qWaitFor([&] { return panel.runsTable()->rowCount() == rows + 1; }, kTimeoutMs)) return nullptr;
+    return &panel.runner().runs().back();
+}
+
+// The plot as drawn now.
+QImage plotImage(app::ScopeView* view) {
+    scope::ScopePlot* plot = view->plot();
+    if (!QTest::qWaitForWindowExposed(plot)) return {};
+    plot->customPlot()->replot(QCustomPlot::rpImmediateRefresh);
+    return plot->grab().toImage();
+}
+
+// The plot draws the run: its points, and many pixels changed from the empty plot `before`.
+bool plotted(app::ScopeView* view, const QImage& before) {
+    if (view->plot()->pointCount(0) < 100) return false;
+    const QImage after = plotImage(view);
+    if (qEnvironmentVariableIsSet("FAMILY_TUNING_SHOT")) after.save(qEnvironmentVariable("FAMILY_TUNING_SHOT"));
+    if (after.size() != before.size()) return false;
+    int changed = 0;
+    for (int y = 0; y < after.height(); ++y)
+        for (int x = 0; x < after.width(); ++x) changed += after.pixel(x, y) != before.pixel(x, y);
+    return changed > 300;
+}
+
+// The mean of the capture's samples from `from` to `to` seconds after its start.
+double meanBetween(const scope::Capture& c, double from, double to) {
+    const auto& v = c.channels.front().values;
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = std::size_t(from / c.interval_s); i < v.size() && double(i) * c.interval_s < to; ++i, ++n)
+        sum += v[i];
+    return n ? sum / n : 0;
+}
+} // namespace
+
+class FamilyTuningTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ServoDesk"));
+        QCoreApplication::setApplicationName(QStringLiteral("ServoDeskFamilyTuningTest"));
+        QSettings().clear();
+    }
+
+    // SC750: a velocity step of 200 RPM shows on DACMON at the manual's 1 V/kRPM (L2147-L2161); KVP doubled
+    // halves the rise; undo to run 1 puts KVP back on the drive, as Read from Drive then shows.
+    void sc750VelocityStepOnDacmonAndKvp() {
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
+        auto& ws = *window.workspace(DriveFamily::Sc750);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("KVP"));
+        QVERIFY(panel);
+        const QImage empty = plotImage(panel->view());
+        const double kvp = panel->gainEditor(QStringLiteral("KVP"))->value();
+        QVERIFY(kvp > 0);
+        panel->gainEditor(QStringLiteral("KVFF"))->setValue(100); // the velocity loop sees the step itself
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("KVFF")), QStringLiteral("\u2713"), kTimeoutMs);
+        panel->movePreset()->setCurrentIndex(0); // velocity step
+        panel->amplitude()->setValue(200);
+        panel->hold()->setValue(150);
+
+        const app::FamilyTuningRun* first = runOnce(*panel);
+        QVERIFY2(first, qPrintable(panel->statusText()));
+        QVERIFY(first->metrics.hasStep);
+        QVERIFY(first->metrics.rise_s.has_value());
+        QVERIFY(first->source.contains(QStringLiteral("DACMON: VELOCITY, 1 V/kRPM")));
+        // 200 RPM at 1 V per kRPM, late in the hold.
+        const double plateau = meanBetween(first->capture, 0.1, 0.16);
+        QVERIFY2(std::abs(plateau - 0.2) < 0.01, qPrintable(QString::number(plateau)));
+        QVERIFY(plotted(panel->view(), empty));
+        const double rise1 = *first->metrics.rise_s;
+
+        QSignalSpy confirmed(&panel->runner(), &app::FamilyTuningRunner::gainConfirmed);
+        panel->gainEditor(QStringLiteral("KVP"))->setValue(2 * kvp);
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("KVP")), QStringLiteral("\u2713"), kTimeoutMs);
+        QCOMPARE(confirmed.count(), 1);
+        confirmed.clear();
+        const app::FamilyTuningRun* second = runOnce(*panel);
+        QVERIFY2(second, qPrintable(panel->statusText()));
+        QVERIFY(second->metrics.rise_s.has_value());
+        QVERIFY2(*second->metrics.rise_s < 0.8 * rise1,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(*second->metrics.rise_s).arg(rise1)));
+        QVERIFY(panel->runsTable()->item(1, 1)->text().startsWith(QStringLiteral("KVP=")));
+
+        panel->runsTable()->selectRow(0);
+        button(panel, QStringLiteral("Undo to Selected Run's Gains"))->click();
+        QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 1, kTimeoutMs); // KVP back
+        panel->gainEditor(QStringLiteral("KVP"))->blockSignals(true);
+        panel->gainEditor(QStringLiteral("KVP"))->setValue(0); // only the drive's answer can bring it back
+        panel->gainEditor(QStringLiteral("KVP"))->blockSignals(false);
+        button(panel, QStringLiteral("Read from Drive"))->click();
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainEditor(QStringLiteral("KVP"))->value(), kvp, kTimeoutMs);
+    }
+
+    // PMC-960 (4.8.1): the velocity-loop jog in SM1 shows on the tach; VLGAIN (TGV) doubled makes the rise
+    // shorter, and TG? reads the new value back.
+    void pmc960TachRiseFollowsVlgain() {
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
+        auto& ws = *window.workspace(DriveFamily::Pmc960);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
+        QVERIFY(panel);
+        const QImage empty = plotImage(panel->view());
+        panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(100); // 4.8.1: TGF100 for the velocity test
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("FFGAIN")), QStringLiteral("\u2713"), kTimeoutMs);
+        panel->gainEditor(QStringLiteral("VLGAIN"))->setValue(4);
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("VLGAIN")), QStringLiteral("\u2713"), kTimeoutMs);
+        panel->movePreset()->setCurrentIndex(0); // velocity loop, SM1
+        panel->hold()->setValue(200);
+        const app::FamilyTuningRun* slow = runOnce(*panel);
+        QVERIFY2(slow && slow->metrics.rise_s, qPrintable(panel->statusText()));
+        QVERIFY(slow->source.contains(QStringLiteral("tach")));
+        QVERIFY(plotted(panel->view(), empty));
+        const double rise1 = *slow->metrics.rise_s;
+
+        // Run Once right after the change, as a user clicks: the run goes out after the gain's SW1 TGV16 SW0.
+        panel->gainEditor(QStringLiteral("VLGAIN"))->setValue(16);
+        const app::FamilyTuningRun* fast = runOnce(*panel);
+        QCOMPARE(panel->runsTable()->item(1, 1)->text(), QStringLiteral("VLGAIN=16"));
+        QVERIFY2(fast && fast->metrics.rise_s, qPrintable(panel->statusText()));
+        QVERIFY2(*fast->metrics.rise_s < 0.7 * rise1, qPrintable(QStringLiteral("%1 vs %2").arg(*fast->metrics.rise_s).arg(rise1)));
+
+        panel->gainEditor(QStringLiteral("VLGAIN"))->blockSignals(true);
+        panel->gainEditor(QStringLiteral("VLGAIN"))->setValue(1);
+        panel->gainEditor(QStringLiteral("VLGAIN"))->blockSignals(false);
+        button(panel, QStringLiteral("Read from Drive"))->click();
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainEditor(QStringLiteral("VLGAIN"))->value(), 16.0, kTimeoutMs);
+    }
+};
+
+QTEST_MAIN(FamilyTuningTest)
+#include "family_tuning_test.moc"
