@@ -86,10 +86,16 @@ std::string monitorLine(const MonitorTrace& t, std::optional<double> seconds) {
         const auto wanted = std::size_t(std::max(0.0, *seconds) / t.interval_s);
         if (wanted < t.volts.size()) first = t.volts.size() - wanted;
     }
-    std::string volts;
-    for (std::size_t i = first; i < t.volts.size(); ++i) (volts += i == first ? "" : ",") += format(t.volts[i]);
-    return "interval=" + format(t.interval_s) + " last=" + format(t.lastSample_s) + " volts=" + volts +
-           " signal=" + t.signal;
+    const auto list = [first](const std::vector<float>& values) {
+        std::string text;
+        for (std::size_t i = first; i < values.size(); ++i) (text += i == first ? "" : ",") += format(values[i]);
+        return text;
+    };
+    std::string line = "interval=" + format(t.interval_s) + " last=" + format(t.lastSample_s) + " volts=" + list(t.volts);
+    if (!t.command.empty()) line += " command=" + list(t.command);
+    line += " signal=" + t.signal;
+    if (!t.command.empty()) line += " | command: " + t.commandSignal;
+    return line;
 }
 } // namespace
 

@@ -52,11 +52,15 @@ struct SimulatorStatus {
 
 // What the bench's oscilloscope saw on the drive's analog monitor output (MonitorRecorder): one sample a
 // servo period, oldest first; empty when the drive has no monitor output the bench records.
+// The bench's second probe sits on the velocity loop's input, so one run gives the loop's frequency response
+// (command -> output): `command` is empty where the drive records none, else as long as `volts`.
 struct MonitorTrace {
     std::string signal;      // what the output carries: "DACMON: VEL.CMD, 1 V/kRPM" or "tach"
     double interval_s = 0;   // between samples (the servo period)
     double lastSample_s = 0; // the drive's clock at the newest sample (seconds since power-up)
     std::vector<float> volts;
+    std::string commandSignal; // what the second probe carries: "VEL.CMD, 1 V/kRPM"
+    std::vector<float> command;
 };
 
 class SimulatorControls {
@@ -106,7 +110,8 @@ public:
 //   master-wave sine|square|triangle AMP_HZ FREQ_HZ · master-wave off · analog-in V · motor NAME · feedback on|off ·
 //   power-cycle · status · monitor [SECONDS]
 // Returns "OK", "ERROR <reason>", for `status` one line of key=value pairs, for `monitor` one line
-// "signal=<text> interval=<s> last=<s> volts=<v>,<v>,..." of the newest SECONDS (all held if none).
+// "interval=<s> last=<s> volts=<v>,<v>,... [command=<v>,<v>,...] signal=<text>[ | command: <text>]" of the
+// newest SECONDS (all held if none).
 std::string runSimulatorCommand(SimulatorControls& controls, std::string_view line);
 
 } // namespace drive_core

@@ -75,12 +75,16 @@ void BodeView::showNothing(const QString& why) {
     m_summary->setText(why);
 }
 
-bool BodeView::showCapture(const scope::Capture& capture) {
-    const scope::CaptureChannel* in = capture.find("VCMD");
-    const scope::CaptureChannel* out = capture.find("VFB");
+bool BodeView::showCapture(const scope::Capture& capture, const QString& input, const QString& output) {
+    const scope::CaptureChannel* in = capture.find(input.toStdString());
+    const scope::CaptureChannel* out = capture.find(output.toStdString());
     if (!in || !out) {
-        showNothing(tr("The capture holds no VCMD and VFB: record them with a velocity step (tuning panel "
-                       "preset \"Step for frequency response\")."));
+        showNothing(input == QStringLiteral("VCMD")
+                        ? tr("The capture holds no VCMD and VFB: record them with a velocity step (tuning panel "
+                             "preset \"Step for frequency response\").")
+                        : tr("The run holds no %1 and %2: run a test move on the simulated drive, whose bench "
+                             "records both.")
+                              .arg(input, output));
         return false;
     }
     m_response = scope::estimateFrequencyResponse(in->values, out->values, capture.interval_s);
@@ -89,11 +93,11 @@ bool BodeView::showCapture(const scope::Capture& capture) {
                         .arg(QString::fromStdString(capture.title), QString::fromStdString(m_response.error)));
         return false;
     }
-    plotResponse(QString::fromStdString(capture.title));
+    plotResponse(QString::fromStdString(capture.title), input + QStringLiteral(" \u2192 ") + output);
     return true;
 }
 
-void BodeView::plotResponse(const QString& title) {
+void BodeView::plotResponse(const QString& title, const QString& pair) {
     m_plot->clearGraphs();
     m_plot->clearItems();
     QVector<double> f, mag, phase;
@@ -154,7 +158,7 @@ void BodeView::plotResponse(const QString& title) {
     }
 
     QStringList parts;
-    parts << tr("<b>%1</b>: VCMD \u2192 VFB").arg(title.toHtmlEscaped());
+    parts << tr("<b>%1</b>: %2").arg(title.toHtmlEscaped(), pair.toHtmlEscaped());
     parts << (m_response.bandwidth_hz
                   ? tr("\u22123 dB bandwidth <b>%1 Hz</b> (phase there %2\u00b0)")
                         .arg(*m_response.bandwidth_hz, 0, 'f', 1)

@@ -19,9 +19,10 @@ class BodeView final : public QDialog {
 public:
     explicit BodeView(QWidget* parent = nullptr);
 
-    // Estimates VCMD -> VFB of the capture and plots it; false (with the reason shown) if it has no such
-    // pair or they do not excite the loop.
-    bool showCapture(const scope::Capture& capture);
+    // Estimates input -> output (VCMD -> VFB, the BDS5's) of the capture and plots it; false (with the reason
+    // shown) if it has no such pair or they do not excite the loop.
+    bool showCapture(const scope::Capture& capture, const QString& input = QStringLiteral("VCMD"),
+                     const QString& output = QStringLiteral("VFB"));
     void showNothing(const QString& why);
 
     const scope::FrequencyResponse& response() const { return m_response; }
@@ -29,7 +30,7 @@ public:
     QString summary() const;
 
 private:
-    void plotResponse(const QString& title);
+    void plotResponse(const QString& title, const QString& pair);
 
     scope::FrequencyResponse m_response;
     QCustomPlot* m_plot;

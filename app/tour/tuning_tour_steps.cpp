@@ -1,9 +1,11 @@
 // The family tuning shots: sc750-tuning (KVFF at 100, then KVP doubled) and pmc960-tuning (TGF100, VLGAIN 4
-// then 16), as the manual's tuning procedure raises a gain between test moves. Each ends on the BDS5 again.
+// then 16), as the manual's tuning procedure raises a gain between test moves, and sc750-bode, the velocity
+// loop's frequency response of the SC750's last run. Each ends on the BDS5 again.
 #include "tuning_tour_steps.h"
 
 #include "family_workspace.h"
 #include "main_window.h"
+#include "scope/bode_view.h"
 #include "tuning/family_tuning_panel.h"
 
 #include <QAction>
@@ -11,6 +13,7 @@
 #include <QDoubleSpinBox>
 #include <QMenu>
 #include <QPointer>
+#include <QTableWidget>
 
 #include <memory>
 
@@ -94,6 +97,26 @@ ScreenshotTour::Step tuningStep(MainWindow& window, drive_core::DriveFamily fami
 }
 } // namespace
 
+// The Frequency Response of the panel's newest run (the runs stay with the panel after it disconnects).
+ScreenshotTour::Step bodeStep(MainWindow& window, drive_core::DriveFamily family, const QString& name) {
+    return {.name = name,
+            .act =
+                [&window, family] {
+                    FamilyTuningPanel* panel = panelOf(window, family);
+                    panel->runsTable()->clearSelection();
+                    panel->runsTable()->setCurrentItem(nullptr);
+                    panel->frequencyResponse()->resize(760, 600);
+                },
+            .ready =
+                [&window, family] {
+                    BodeView* bode = panelOf(window, family)->frequencyResponse();
+                    return bode->isVisible() && bode->response().bandwidth_hz.has_value();
+                },
+            .grab = [&window, family] { return TourShot::of(panelOf(window, family)->frequencyResponse()); },
+            .cleanUp = [&window, family] { panelOf(window, family)->frequencyResponse()->close(); },
+            .state = [&window, family] { return panelOf(window, family)->frequencyResponse()->summary(); }};
+}
+
 std::vector<ScreenshotTour::Step> tuningTourSteps(MainWindow& window) {
     std::vector<ScreenshotTour::Step> steps;
     if (!panelOf(window, drive_core::DriveFamily::Sc750) || !panelOf(window, drive_core::DriveFamily::Pmc960)) return steps;
@@ -101,6 +124,7 @@ std::vector<ScreenshotTour::Step> tuningTourSteps(MainWindow& window) {
     const double kvp = sc750->gainEditor(QStringLiteral("KVP"))->value(); // the catalog's power-up value until read
     steps.push_back(tuningStep(window, drive_core::DriveFamily::Sc750, QStringLiteral("sc750-tuning"),
                                {{QStringLiteral("KVFF"), 100}}, QStringLiteral("KVP"), 2 * std::max(kvp, 0.087)));
+    steps.push_back(bodeStep(window, drive_core::DriveFamily::Sc750, QStringLiteral("sc750-bode")));
     steps.push_back(tuningStep(window, drive_core::DriveFamily::Pmc960, QStringLiteral("pmc960-tuning"),
                                {{QStringLiteral("FFGAIN"), 100}, {QStringLiteral("VLGAIN"), 4}},
                                QStringLiteral("VLGAIN"), 16));

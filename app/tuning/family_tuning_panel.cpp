@@ -1,6 +1,7 @@
 // FamilyTuningPanel: layout and wiring; the runs table.
 #include "family_tuning_panel.h"
 
+#include "app/scope/bode_view.h"
 #include "scope/measurements_table.h"
 #include "scope/scope_view.h"
 
@@ -60,12 +61,16 @@ FamilyTuningPanel::FamilyTuningPanel(TuningProfile profile, QWidget* parent)
     m_runsTable->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_runsTable->setSelectionMode(QAbstractItemView::SingleSelection);
     m_undo = new QPushButton(tr("Undo to Selected Run's Gains"), this);
+    m_bodeButton = new QPushButton(tr("Frequency Response..."), this);
+    m_bodeButton->setToolTip(tr("The velocity loop's Bode plot (%1 \u2192 %2) of the selected run, or the last")
+                                 .arg(m_runner->profile().command, m_runner->profile().monitor));
     auto* runsBox = new QWidget(this);
     auto* runsLayout = new QVBoxLayout(runsBox);
     runsLayout->setContentsMargins(0, 0, 0, 0);
     runsLayout->addWidget(m_runsTable, 1);
     auto* runsButtons = new QHBoxLayout;
     runsButtons->addWidget(m_undo);
+    runsButtons->addWidget(m_bodeButton);
     runsButtons->addStretch(1);
     runsLayout->addLayout(runsButtons);
 
@@ -83,7 +88,11 @@ FamilyTuningPanel::FamilyTuningPanel(TuningProfile profile, QWidget* parent)
         const int row = m_runsTable->currentRow();
         if (row >= 0) m_runner->undoTo(m_runsTable->item(row, 0)->text().toInt());
     });
-    connect(m_runsTable, &QTableWidget::itemSelectionChanged, this, &FamilyTuningPanel::updateButtons);
+    connect(m_bodeButton, &QPushButton::clicked, this, &FamilyTuningPanel::frequencyResponse);
+    connect(m_runsTable, &QTableWidget::itemSelectionChanged, this, [this] {
+        updateButtons();
+        if (m_bode && m_bode->isVisible()) showBode();
+    });
     connect(m_runner, &FamilyTuningRunner::gainConfirmed, this,
             [this](const QString& name, double value) { showGain(name, value, QStringLiteral("\u2713")); });
     connect(m_runner, &FamilyTuningRunner::gainRefused, this, [this](const QString& name, const QString& why) {
@@ -245,12 +254,33 @@ void FamilyTuningPanel::addRun(const FamilyTuningRun& run) {
         m_runsTable->setItem(row, c, item);
     }
     m_runsTable->scrollToBottom();
+    if (m_bode && m_bode->isVisible() && m_runsTable->currentRow() < 0) showBode(); // follows the newest run
     if (!run.metrics.hasStep)
         return setStatus(tr("Run %1: the response did not move — is the drive enabled and the move allowed?").arg(run.number));
     setStatus(tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
                   .arg(run.number)
                   .arg(run.metrics.overshoot_pct, 0, 'f', 1)
                   .arg(ms(run.metrics.rise_s), ms(run.metrics.settling_s)));
+}
+
+BodeView* FamilyTuningPanel::frequencyResponse() {
+    if (!m_bode) m_bode = new BodeView(this);
+    showBode();
+    m_bode->show();
+    m_bode->raise();
+    return m_bode;
+}
+
+void FamilyTuningPanel::showBode() {
+    const QList<FamilyTuningRun>& runs = m_runner->runs();
+    if (runs.isEmpty())
+        return m_bode->showNothing(tr("No run yet: Run Once, then the frequency response of its %1 \u2192 %2.")
+                                       .arg(m_runner->profile().command, m_runner->profile().monitor));
+    const int row = m_runsTable->currentRow();
+    const int number = row >= 0 ? m_runsTable->item(row, 0)->text().toInt() : runs.back().number;
+    for (const FamilyTuningRun& run : runs)
+        if (run.number == number)
+            m_bode->showCapture(run.capture, m_runner->profile().command, m_runner->profile().monitor);
 }
 
 void FamilyTuningPanel::updateButtons() {

@@ -1,8 +1,9 @@
 // FamilyTuningPanel: the Tuning dock of the SC750 and the PMC-960 — the profile's gains (spin boxes bounded by
 // the catalog, each change sent and confirmed, Read from Drive), a test move preset with its amplitude and
-// hold, Run Once / Run Continuously / Stop, each run's response overlaid on a scope with its measurements, and
-// a runs table (gains changed, overshoot, rise, settling, what was sampled) with undo to any run's gains. The
-// drive work is FamilyTuningRunner's; the workspace attaches its session. GUI thread only.
+// hold, Run Once / Run Continuously / Stop, each run's response overlaid on a scope with its measurements, a
+// runs table (gains changed, overshoot, rise, settling, what was sampled) with undo to any run's gains, and
+// the Bode plot of a run's velocity loop (the bench's command probe against its monitor output). The drive
+// work is FamilyTuningRunner's; the workspace attaches its session. GUI thread only.
 #pragma once
 
 #include "family_tuning_runner.h"
@@ -19,6 +20,7 @@ class QTableWidget;
 
 namespace app {
 
+class BodeView;
 class ScopeView;
 
 class FamilyTuningPanel final : public QWidget {
@@ -38,6 +40,9 @@ public:
     QSpinBox* amplitude() const { return m_amplitude; }
     QSpinBox* hold() const { return m_hold; }
     QString statusText() const;
+    // The Bode view of the selected run (the newest when none is selected), opened and raised; it follows
+    // the selection and new runs while it is shown.
+    BodeView* frequencyResponse();
 
 private:
     QWidget* buildGains();
@@ -45,6 +50,7 @@ private:
     void applyMove();
     void addRun(const FamilyTuningRun& run);
     void updateButtons();
+    void showBode();
     void setStatus(const QString& text);
     void showGain(const QString& name, double value, const QString& mark);
 
@@ -61,6 +67,8 @@ private:
     QPushButton* m_runLoop = nullptr;
     QPushButton* m_stop = nullptr;
     QPushButton* m_undo = nullptr;
+    QPushButton* m_bodeButton = nullptr;
+    BodeView* m_bode = nullptr;
     QLabel* m_status = nullptr;
     bool m_showing = false; // setting an editor from the drive: not an edit
 };

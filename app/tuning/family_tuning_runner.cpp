@@ -11,7 +11,7 @@
 namespace app {
 
 namespace {
-constexpr double kPre_s = 0.02;  // captured before the move's start was answered: the start itself
+constexpr double kPre_s = 0.02;  // captured before the move's start was sent
 constexpr int kClockPollMs = 2; // how often a wait looks at the drive's clock
 } // namespace
 
@@ -81,6 +81,7 @@ void FamilyTuningRunner::pump() {
     }
     if (m_batches.isEmpty() || !m_session || m_batches.front().waiting != 0) return;
     Batch& b = m_batches.front();
+    m_lastSent_s = clock_s();
     b.waiting = m_session->sendLine(b.lines.value(b.answers.size()));
 }
 
@@ -161,8 +162,11 @@ void FamilyTuningRunner::startRun() {
 
 void FamilyTuningRunner::afterStart() {
     if (!m_running) return;
-    m_start_s = clock_s();
-    waitUntil(m_start_s + m_holdMs / 1000.0, [this] {
+    // One line in flight at a time: the last line sent was the start's last. Its send time, not this answer's
+    // arrival, places the capture: a busy GUI thread may read the answer long after the drive acted on it
+    // (the step then fell before the captured window: "the response did not move").
+    m_start_s = m_lastSent_s;
+    waitUntil(clock_s() + m_holdMs / 1000.0, [this] {
         sendAll(m_profile.lines(move().back, m_amplitude), [this](const QList<serialport::LineAnswer>&) { afterBack(); },
                 [this](const QString& why) { fail(tr("The drive refused %1").arg(why)); });
     });
@@ -179,7 +183,7 @@ void FamilyTuningRunner::capture() {
         return sim->readMonitor([self](const drive_core::MonitorTrace& trace) {
             if (!self || !self->m_running) return;
             if (trace.volts.empty()) return self->fail(tr("The simulated drive's bench has no analog monitor."));
-            // From kPre_s before the start was answered to the newest sample.
+            // From kPre_s before the start was sent to the newest sample.
             const double span_s = trace.lastSample_s - (self->m_start_s - kPre_s);
             const auto wanted = std::size_t(std::clamp(span_s / trace.interval_s, 1.0, double(trace.volts.size())));
             scope::Capture c;
@@ -187,6 +191,11 @@ void FamilyTuningRunner::capture() {
             scope::CaptureChannel channel{self->m_profile.monitor.toStdString(), "V", {}};
             channel.values.assign(trace.volts.end() - long(wanted), trace.volts.end());
             c.channels.push_back(std::move(channel));
+            if (trace.command.size() == trace.volts.size()) { // the second probe: the velocity loop's input
+                scope::CaptureChannel command{self->m_profile.command.toStdString(), "V", {}};
+                command.values.assign(trace.command.end() - long(wanted), trace.command.end());
+                c.channels.push_back(std::move(command));
+            }
             const QString source = tr("bench oscilloscope on %1, %2 samples/s")
                                        .arg(QString::fromStdString(trace.signal))
                                        .arg(1.0 / trace.interval_s, 0, 'f', 0);

@@ -110,7 +110,8 @@ private:
     bool m_prepared = false;
     bool m_running = false;
     bool m_continuous = false;
-    double m_start_s = 0; // the clock when the move started
+    double m_start_s = 0;    // the clock when the move's last start line was sent: the drive cannot start earlier
+    double m_lastSent_s = 0; // the clock when pump() last sent a line
     QTimer m_wait;
     std::function<void()> m_then;
     double m_until_s = 0;

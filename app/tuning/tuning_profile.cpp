@@ -49,6 +49,7 @@ TuningProfile sc750() {
     p.prepareNote = QStringLiteral("The runs put the resolver velocity on the analog monitor (DACMAP=1, 1 V/kRPM) "
                                    "and enable the drive (ENABLE=1).");
     p.monitor = QStringLiteral("DACMON");
+    p.command = QStringLiteral("VEL.CMD");
     p.watch = QStringLiteral("RVEL");
     p.watchUnit = QStringLiteral("RPM");
     for (const TuningGain& g : p.gains) p.readGains << g.parameter;
@@ -84,6 +85,7 @@ TuningProfile pmc960() {
     p.prepareNote = QStringLiteral("The oscilloscope is on the tachometer signal after TGAIN (§4.8). Each gain is "
                                    "written with SW1 before and SW0 after it. The jog uses the present A.");
     p.monitor = QStringLiteral("tach");
+    p.command = QStringLiteral("velocity command");
     p.watch = QStringLiteral("V");
     p.watchUnit = QStringLiteral("V units");
     p.readGains = {QStringLiteral("TG?")};

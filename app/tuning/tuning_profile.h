@@ -43,6 +43,7 @@ struct TuningProfile {
     QStringList prepare;   // sent before a series of runs (the monitor's source, the enable)
     QString prepareNote;   // what prepare does, shown to the user
     QString monitor;       // the signal the bench's oscilloscope probes: "DACMON", "tach"
+    QString command;       // what its second probe records, the velocity loop's input: "VEL.CMD"
     QString watch;         // on a real drive, the variable polled instead (watch_choices): "RVEL", "V"
     QString watchUnit;     // its unit: "RPM", "V units"
     QStringList readGains; // the lines that read every gain back

@@ -91,6 +91,8 @@ std::string_view faultRemedy(int code);
 
 // Fault codes the simulator raises itself.
 inline constexpr int kFaultNone = 0;
+inline constexpr int kFaultOverspeed = 1; // software resolver overspeed (L1531)
+inline constexpr int kFaultIt = 4;        // servocontroller I.t (L1534)
 inline constexpr int kFaultEnabled = 8;
 inline constexpr int kFaultFollowingError = 241;
 inline constexpr int kFaultProgramMemory = 242;

@@ -87,8 +87,8 @@ void Pmc960Servo::tick(Loop loop, double psj_counts, double referenceVelocity_cp
     const physics::MotorParameters& motor = m_plant.motor();
     const double speed = m_plant.motorSpeed_radPerS();
     m_tach_V += m_tachAlpha * (m_tach_VperRadS * speed - m_tach_V); // the filter runs in every mode
-    m_tachScope.push(m_tach_V, double(++m_periods) * kPeriod_s);
     double current_A = 0;
+    double velocityCommand_V = 0; // the summing junction's command: feedforward plus position compensation
     switch (loop) {
     case Loop::Off: // S9: the armature shorted through the brake resistor
         resetIntegrators();
@@ -119,7 +119,8 @@ void Pmc960Servo::tick(Loop loop, double psj_counts, double referenceVelocity_cp
         } else {
             m_positionIntegral_Vs = 0;
         }
-        const double sum = feedForward + positionCommand - tach;
+        velocityCommand_V = feedForward + positionCommand;
+        const double sum = velocityCommand_V - tach;
         const double next = m_velocityIntegral_Vs + sum * kPeriod_s;
         const double icmd = m_gv * (sum + m_wb * next);
         if (std::abs(icmd) < kRail_V || (sum > 0) != (m_velocityIntegral_Vs > 0)) m_velocityIntegral_Vs = next;
@@ -128,6 +129,7 @@ void Pmc960Servo::tick(Loop loop, double psj_counts, double referenceVelocity_cp
         break;
     }
     }
+    m_tachScope.push(m_tach_V, velocityCommand_V, double(++m_periods) * kPeriod_s);
     m_plant.step(kPeriod_s, current_A);
 }
 

@@ -79,7 +79,8 @@ void Pmc960SimulatorControls::powerCycle() {
 }
 
 MonitorTrace Pmc960SimulatorControls::analogMonitor() const {
-    MonitorTrace trace = m_drive.state().motion.servo().tachScope().trace("tach (after TGAIN)");
+    MonitorTrace trace = m_drive.state().motion.servo().tachScope().trace(
+        "tach (after TGAIN)", "velocity command (feedforward + position compensation, tach volts)");
     trace.lastSample_s = std::chrono::duration<double>(m_drive.now()).count(); // the drive's clock, to a period
     return trace;
 }

@@ -51,7 +51,7 @@ void Sc750Drive::powerUp() {
     m_loggedOn = m_axis == 255;
     m_uart.setMuted(!m_loggedOn);
     m_programInput.clear();
-    m_runFault = 0;
+    m_runFault = m_servoFault = 0;
     m_ticks = 0;
     m_timeBase = 0;
     m_timeOffset_s = 0;
@@ -96,12 +96,13 @@ void Sc750Drive::setConfigured(bool configured) {
 }
 
 int Sc750Drive::faultCode() const {
+    if (m_servoFault != 0) return m_servoFault; // what stopped the motor
     if (m_runFault != 0) return m_runFault;
     return enabled() ? cat::kFaultEnabled : cat::kFaultNone;
 }
 
 bool Sc750Drive::enabled() const {
-    return m_configured && m_enableInput && m_runFault == 0 && num(ix().enable) == 1;
+    return m_configured && m_enableInput && m_runFault == 0 && m_servoFault == 0 && num(ix().enable) == 1;
 }
 
 void Sc750Drive::receive(std::string_view bytes) {
@@ -131,6 +132,7 @@ void Sc750Drive::tick() {
     }
     m_wasEnabled = en;
     servoTick(en); // the loops compare the command and the shaft at the tick's start, then the motor moves
+    servoFaults();
     m_motion.step(kTick_s);
     if (en && num(ix().blktype) == 2) m_motion.stepGearing(kTick_s, gearSettings());
     analogTick();

@@ -120,6 +120,9 @@ private:
     bool interruptAsserted(int source);
     // sc750_drive_servo.cpp: the servo loops for the BLKTYPE, the shaft they move, the settings they read.
     void servoTick(bool enabled);
+    // The servo's own faults after a tick (overspeed, I.t, following error; DECISIONS 56): the first latches
+    // and disables until ENABLE or the enable input goes low.
+    void servoFaults();
     ServoSettings servoSettings() const;
     // sc750_drive_io.cpp: analog input/output, encoder output.
     void analogTick();
@@ -154,6 +157,7 @@ private:
     int m_axisSwitch = 255;
     int m_axis = 255;
     int m_runFault = 0;
+    int m_servoFault = 0; // 1, 4 or 241 while latched
     bool m_loggedOn = true;
     bool m_enableInput = true;
     bool m_homeSwitch = false;

@@ -100,6 +100,7 @@ const DriveIndex& driveIndex() {
         i.ilmtminus = at("ILMT.MINUS");
         i.cmdgain = at("CMDGAIN");
         i.itf0 = at("ITF0");
+        i.itthresh = at("IT.THRESH");
         i.model = at("MODEL");
         i.velerr = at("VEL.ERR");
         i.icmd = at("ICMD");

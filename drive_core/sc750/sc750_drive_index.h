@@ -11,7 +11,7 @@ struct DriveIndex {
         blktype, autostart, gearing, gearlock, gearerror, encin, pulsesin, pulsesout, accelgear, decelgear, acceltype,
         regmode, regfunc, regdist, regflag, regpos, regrespos, regencpos, dacmon, adf0, adoffset, dmf0, encout,
         analogout, cwot, ccwot, poserrmoving, poserrstopped, kvp, kvi, kpp, kvff, arf0, arf1, ilc, ilmtplus, ilmtminus,
-        cmdgain, itf0, model, velerr, icmd, ifb;
+        cmdgain, itf0, itthresh, model, velerr, icmd, ifb;
 };
 
 const DriveIndex& driveIndex();

@@ -59,7 +59,9 @@ void Sc750Drive::analogTick() {
     const double sampled = std::clamp(m_analogIn_V, -12.0, 12.0) + num(ix().adoffset);
     m_analogInFiltered_V = std::clamp(lowPass(m_analogInFiltered_V, sampled, num(ix().adf0)), -12.0, 12.0);
     m_dacmon_V = lowPass(m_dacmon_V, dacSignal_V(), num(ix().dmf0));
-    m_dacmonScope.push(m_dacmon_V, std::chrono::duration<double>(m_now).count());
+    // The second probe: the net velocity command at DACMAP 2's scale, 1 V/kRPM (DECISIONS 55).
+    m_dacmonScope.push(m_dacmon_V, m_servo.velocityCommand_cps() / kCpsPerRpm / 1000.0,
+                       std::chrono::duration<double>(m_now).count());
     const double lines = num(ix().encout);
     if (lines > 0) m_encoderOut_counts += (m_actual_counts - m_lastShaft_counts) * 4.0 * lines / kCountsPerRev;
     m_lastShaft_counts = m_actual_counts;
@@ -71,7 +73,7 @@ MonitorTrace Sc750Drive::analogMonitor() const {
     const double gain = map == 0 ? 1.0 : num(ix().dmgain);
     char scale[64];
     std::snprintf(scale, sizeof scale, "%g V/%s", info.voltsPerUnit * gain, std::string(info.unit).c_str());
-    return m_dacmonScope.trace("DACMON: " + std::string(info.mnemonic) + ", " + scale);
+    return m_dacmonScope.trace("DACMON: " + std::string(info.mnemonic) + ", " + scale, "VEL.CMD, 1 V/kRPM");
 }
 
 // Source k of the catalog's table (0 CCWINH, 1 CCWOT, 2 CHAR, 3 CWINH, 4 CWOT, 5 DISABLE, 6 FAULT,

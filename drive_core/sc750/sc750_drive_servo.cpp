@@ -9,8 +9,12 @@
 
 namespace drive_core::sc750 {
 
+namespace cat = catalog::sc750;
+
 namespace {
 constexpr double kAnalogPosition_RevPerV = 0.025; // BLKTYPE 3 (L1948)
+constexpr double kOverspeed_rpm = 12000;          // the resolver speed the R/D converter tracks (DECISIONS 56)
+constexpr double kFollowingErrorOverflow_counts = 32767; // a 16-bit error register (DECISIONS 56)
 } // namespace
 
 ServoSettings Sc750Drive::servoSettings() const {
@@ -52,6 +56,20 @@ void Sc750Drive::servoTick(bool en) {
     m_servo.tick(c, s);
     m_actual_counts = m_servo.position_counts();
     if (!en || s.blocktype < 2) m_motion.setShaftCommand(m_actual_counts);
+}
+
+void Sc750Drive::servoFaults() {
+    // Fault reset: the enable taken away (L1922's "press fault reset"; the SC750's reset is the enable).
+    if (!m_enableInput || num(ix().enable) != 1) m_servoFault = 0;
+    if (m_servoFault != 0) return;
+    const double speed_rpm = std::abs(m_servo.velocity_cps()) / kCpsPerRpm;
+    const double itLimit_A = num(ix().itthresh) / 100.0 * servoSettings().controllerPeak_A;
+    if (speed_rpm > kOverspeed_rpm)
+        m_servoFault = cat::kFaultOverspeed;
+    else if (m_servo.itFiltered_A() > itLimit_A)
+        m_servoFault = cat::kFaultIt;
+    else if (enabled() && std::abs(lag_counts()) > kFollowingErrorOverflow_counts)
+        m_servoFault = cat::kFaultFollowingError;
 }
 
 bool Sc750Drive::selectMotor(std::string_view name) {

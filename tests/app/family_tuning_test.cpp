@@ -5,6 +5,7 @@
 #include "app/main_window.h"
 #include "app/pmc960/pmc960_workspace.h"
 #include "app/sc750/sc750_workspace.h"
+#include "app/scope/bode_view.h"
 #include "app/scope/scope_view.h"
 #include "app/tuning/family_tuning_panel.h"
 
@@ -15,6 +16,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QDoubleSpinBox>
 #include <QMenu>
 #include <QPushButton>
@@ -24,6 +26,9 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
+#include <QThread>
+
+#include "serialport/drive_session.h"
 
 #include <algorithm>
 
@@ -92,6 +97,16 @@ bool plotted(app::ScopeView* view, const QImage& before) {
     return changed > 300;
 }
 
+// The -3 dB bandwidth of the velocity loop in run `row` of the table, from the panel's Frequency Response
+// (the bench's command probe against its monitor output); 0 when there is none.
+double bandwidthOfRow(FamilyTuningPanel& panel, int row, QString* summary = nullptr) {
+    panel.runsTable()->selectRow(row);
+    app::BodeView* bode = panel.frequencyResponse();
+    if (!bode || !bode->isVisible()) return 0;
+    if (summary) *summary = bode->summary();
+    return bode->response().bandwidth_hz.value_or(0);
+}
+
 // The mean of the capture's samples from `from` to `to` seconds after its start.
 double meanBetween(const scope::Capture& c, double from, double to) {
     const auto& v = c.channels.front().values;
@@ -157,6 +172,18 @@ private slots:
                  qPrintable(QStringLiteral("%1 vs %2").arg(*second->metrics.rise_s).arg(rise1)));
         QVERIFY(panel->runsTable()->item(1, 1)->text().startsWith(QStringLiteral("KVP=")));
 
+        // The velocity loop's frequency response from the bench's second probe (VEL.CMD -> DACMON): near the
+        // crossover the default KVP was designed for (KVP Kt / J = 327 rad/s, 52 Hz: DECISIONS 49), and wider
+        // with KVP doubled.
+        QString summary;
+        const double bandwidth1 = bandwidthOfRow(*panel, 0, &summary);
+        QVERIFY2(summary.contains(QStringLiteral("VEL.CMD \u2192 DACMON")), qPrintable(summary));
+        QVERIFY2(bandwidth1 > 0.6 * 52 && bandwidth1 < 2.5 * 52, qPrintable(summary));
+        const double bandwidth2 = bandwidthOfRow(*panel, 1, &summary);
+        QVERIFY2(bandwidth2 > 1.3 * bandwidth1, qPrintable(QStringLiteral("%1 vs %2: %3").arg(bandwidth2).arg(bandwidth1).arg(summary)));
+        QVERIFY(panel->frequencyResponse()->plot()->graphCount() == 2);
+        panel->frequencyResponse()->close();
+
         panel->runsTable()->selectRow(0);
         button(panel, QStringLiteral("Undo to Selected Run's Gains"))->click();
         QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 1, kTimeoutMs); // KVP back
@@ -192,11 +219,27 @@ private slots:
         const double rise1 = *slow->metrics.rise_s;
 
         // Run Once right after the change, as a user clicks: the run goes out after the gain's SW1 TGV16 SW0.
+        // A busy GUI thread reads each answer 150 ms after the drive gave it (the stall is the condition under
+        // test, not a wait): the run must still capture its step, which happens when the jog line is sent.
+        QVERIFY(ws.driveSession());
+        const QMetaObject::Connection stall = connect(ws.driveSession(), &serialport::DriveSession::answered, this,
+                                                      [] { QThread::msleep(150); });
         panel->gainEditor(QStringLiteral("VLGAIN"))->setValue(16);
         const app::FamilyTuningRun* fast = runOnce(*panel);
+        disconnect(stall);
         QCOMPARE(panel->runsTable()->item(1, 1)->text(), QStringLiteral("VLGAIN=16"));
         QVERIFY2(fast && fast->metrics.rise_s, qPrintable(panel->statusText()));
         QVERIFY2(*fast->metrics.rise_s < 0.7 * rise1, qPrintable(QStringLiteral("%1 vs %2").arg(*fast->metrics.rise_s).arg(rise1)));
+
+        // The velocity loop's frequency response (the summing junction's command -> the tach): four times
+        // VLGAIN, a wider loop.
+        QString summary;
+        const double bandwidth4 = bandwidthOfRow(*panel, 0, &summary);
+        QVERIFY2(bandwidth4 > 0, qPrintable(summary));
+        const double bandwidth16 = bandwidthOfRow(*panel, 1, &summary);
+        QVERIFY2(summary.contains(QStringLiteral("velocity command \u2192 tach")), qPrintable(summary));
+        QVERIFY2(bandwidth16 > 2 * bandwidth4, qPrintable(QStringLiteral("%1 vs %2: %3").arg(bandwidth16).arg(bandwidth4).arg(summary)));
+        panel->frequencyResponse()->close();
 
         panel->gainEditor(QStringLiteral("VLGAIN"))->blockSignals(true);
         panel->gainEditor(QStringLiteral("VLGAIN"))->setValue(1);

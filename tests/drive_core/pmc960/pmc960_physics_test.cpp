@@ -181,7 +181,7 @@ VelocityStep velocityStep(int velocityGain, double loadInertia_kgm2 = -1) {
     setTable(t, "TGF", 40);
     if (loadInertia_kgm2 >= 0) t.drive.controls()->setLoadInertia_kgm2(loadInertia_kgm2);
     t.type("SM1\r");
-    t.type("J41+");
+    EXPECT_EQ(t.type("J41+\r").find('#'), std::string::npos);
     const Trace trace = record(t, 300ms);
     const double final = trace.velocity.back();
     return {riseTime(trace.velocity, 0, final), overshoot(trace.velocity, 0, final)};
@@ -207,7 +207,7 @@ TEST(Pmc960Monitor, TachTraceShowsTheVelocityStep) {
     setTable(t, "TGV", 8);
     setTable(t, "TGF", 40);
     t.type("SM1\r");
-    t.type("J41+");
+    EXPECT_EQ(t.type("J41+\r").find('#'), std::string::npos);
     const Trace trace = record(t, 300ms);
     const drive_core::MonitorTrace tach = t.drive.controls()->analogMonitor();
     EXPECT_DOUBLE_EQ(tach.interval_s, 0.0005);
@@ -219,15 +219,50 @@ TEST(Pmc960Monitor, TachTraceShowsTheVelocityStep) {
     const double tachRise = riseTime(volts, 0, finalVolts) * 2; // riseTime counts 250 us samples; these are 500 us
     EXPECT_NEAR(tachRise, speedRise, 0.2 * speedRise + 0.001);
     // Twice the speed, twice the volts: the tach is proportional.
-    t.type("J82+");
+    EXPECT_EQ(t.type("J82+\r").find('#'), std::string::npos);
+    ASSERT_GT(finalSpeed, 0);
     const Trace faster = record(t, 300ms);
     const double doubled = t.drive.controls()->analogMonitor().volts.back();
     EXPECT_NEAR(doubled / finalVolts, faster.velocity.back() / finalSpeed, 0.02);
     const std::string line = drive_core::runSimulatorCommand(*t.drive.controls(), "monitor 0.01");
     EXPECT_TRUE(line.starts_with("interval=0.0005 ")) << line;
-    const auto volts0 = line.find("volts="), signal = line.find(" signal=tach (after TGAIN)");
+    const auto volts0 = line.find("volts="), command = line.find(" command="),
+               signal = line.find(" signal=tach (after TGAIN)");
     ASSERT_NE(signal, std::string::npos) << line;
-    EXPECT_EQ(std::count(line.begin() + long(volts0), line.begin() + long(signal), ','), 19) << "20 samples in 10 ms";
+    ASSERT_NE(command, std::string::npos) << line;
+    EXPECT_EQ(std::count(line.begin() + long(volts0), line.begin() + long(command), ','), 19) << "20 samples in 10 ms";
+    EXPECT_EQ(std::count(line.begin() + long(command), line.begin() + long(signal), ','), 19) << "20 samples in 10 ms";
+}
+
+// The bench's second probe (DECISIONS S14) records the summing junction's command beside the tach, in the
+// same volts: in SM1 the feedforward alone, rising before the tach does; with VLCOMP's integrator the tach
+// settles on the command (the loop's gain is 1 at rest), and twice the jog rate is twice the command.
+TEST(Pmc960Monitor, TheSecondProbeRecordsTheVelocityCommand) {
+    TestDrive t;
+    t.writeEnable();
+    t.type("A65535\r");
+    setTable(t, "TGV", 8);
+    setTable(t, "TGB", 40);
+    setTable(t, "TGF", 40);
+    t.type("SM1\r");
+    EXPECT_EQ(t.type("J41+\r").find('#'), std::string::npos);
+    record(t, 300ms);
+    const drive_core::MonitorTrace probe = t.drive.controls()->analogMonitor();
+    ASSERT_EQ(probe.command.size(), probe.volts.size());
+    EXPECT_FALSE(probe.commandSignal.empty());
+    const std::vector<float> command(probe.command.end() - 600, probe.command.end());
+    const std::vector<float> tach(probe.volts.end() - 600, probe.volts.end());
+    const double finalCommand = command.back();
+    ASSERT_GT(finalCommand, 0.05);
+    EXPECT_NEAR(tach.back(), finalCommand, 0.02 * finalCommand);
+    const auto firstAbove = [](const std::vector<float>& v, double level) {
+        return std::find_if(v.begin(), v.end(), [&](float x) { return x >= level; }) - v.begin();
+    };
+    EXPECT_LT(firstAbove(command, 0.5 * finalCommand), firstAbove(tach, 0.5 * finalCommand));
+    // The <cr> ends the J line: without it the next J would be a character that stops the jog (L1275).
+    EXPECT_EQ(t.type("J82+\r").find('#'), std::string::npos);
+    record(t, 300ms);
+    EXPECT_NEAR(t.drive.controls()->analogMonitor().command.back() / finalCommand, 2.0, 0.02);
 }
 
 // 4.8.1 and 4.8.3: the manual's criteria can be met — raising VLGAIN from 1 finds a velocity rise of 3-15 ms

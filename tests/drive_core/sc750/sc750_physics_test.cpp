@@ -184,7 +184,29 @@ TEST(Sc750Monitor, DacmonTraceShowsTheVelocityStepAtTheManualsScale) {
     EXPECT_NEAR(dacRise, speedRise, 0.2 * speedRise + 0.000427);
     const std::string line = drive_core::runSimulatorCommand(*s.b.drive.controls(), "monitor 0.01");
     EXPECT_TRUE(line.starts_with("interval=0.000427 ")) << line;
-    EXPECT_TRUE(line.ends_with(" signal=DACMON: VELOCITY, 1 V/kRPM")) << line;
+    EXPECT_TRUE(line.ends_with(" signal=DACMON: VELOCITY, 1 V/kRPM | command: VEL.CMD, 1 V/kRPM")) << line;
+}
+
+// The bench's second probe (DECISIONS 55) records the net velocity command beside DACMON: in BLKTYPE 1 it is
+// the analog input at 1 kRPM/V (L1948) shown at DACMAP 2's 1 V/kRPM, so 0.1 V in is 0.1 V on the probe, a
+// step that comes before the speed's.
+TEST(Sc750Monitor, TheSecondProbeRecordsTheVelocityCommand) {
+    Servo s({{"BLKTYPE", "1"}, {"KVI", "0"}, {"ADF0", "10000"}, {"DACMAP", "1"}});
+    s.run(0.05);
+    s.b.drive.controls()->setAnalogInput_V(0.1);
+    s.run(0.1);
+    const drive_core::MonitorTrace dac = s.b.drive.controls()->analogMonitor();
+    EXPECT_EQ(dac.commandSignal, "VEL.CMD, 1 V/kRPM");
+    ASSERT_EQ(dac.command.size(), dac.volts.size());
+    EXPECT_NEAR(dac.command.back(), 0.1, 0.001);
+    const auto firstAbove = [](const std::vector<float>& v, double level) {
+        return std::find_if(v.begin(), v.end(), [&](float x) { return x >= level; }) - v.begin();
+    };
+    EXPECT_LT(firstAbove(dac.command, 0.05), firstAbove(dac.volts, 0.05));
+    const std::string line = drive_core::runSimulatorCommand(*s.b.drive.controls(), "monitor 0.01");
+    const auto command = line.find(" command="), signal = line.find(" signal=");
+    ASSERT_NE(command, std::string::npos) << line;
+    EXPECT_EQ(std::count(line.begin() + long(command), line.begin() + long(signal), ','), 22) << "23 ticks in 10 ms";
 }
 
 } // namespace
