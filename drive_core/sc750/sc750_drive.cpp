@@ -19,11 +19,7 @@ constexpr std::size_t kInputBuffer = 256;
 constexpr char kCtrlC = 0x03;
 } // namespace
 
-const DriveIndex& Sc750Drive::ix() const {
-    return driveIndex();
-}
-
-Sc750Drive::Sc750Drive() {
+Sc750Drive::Sc750Drive() : m_ix(&driveIndex()) {
     m_uart.reset(9600);
     powerUp();
 }

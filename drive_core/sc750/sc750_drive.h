@@ -111,7 +111,7 @@ private:
     void applyParams();
     bool enabled() const;
     bool homeClosed() const;
-    double num(int index) const;
+    double num(int index) const { return toDouble(m_values[std::size_t(index)]); }
     void set(int index, Value value) { m_values[std::size_t(index)] = std::move(value); }
     MoveSettings settings() const;
     GearSettings gearSettings() const;
@@ -158,6 +158,7 @@ private:
     int m_axis = 255;
     int m_runFault = 0;
     int m_servoFault = 0; // 1, 4 or 241 while latched
+    double m_controllerPeak_A = 0; // the MODEL's peak current, as the last servo tick read it
     bool m_loggedOn = true;
     bool m_enableInput = true;
     bool m_homeSwitch = false;
@@ -169,6 +170,13 @@ private:
     double m_analogIn_V = 0;         // the bench's voltage on the analog input
     double m_analogInFiltered_V = 0; // ANALOG.IN, after ADF0
     double m_dacmon_V = 0;           // DACMON = the analog output, after DMF0
+    // A first-order low-pass over one tick, its alpha kept until the corner changes (an exp a tick each).
+    struct LowPass {
+        double corner_Hz = -1;
+        double alpha = 0;
+        double operator()(double filtered, double input, double corner);
+    };
+    LowPass m_adf0, m_dmf0;          // ADF0 on the analog input, DMF0 on the analog output
     MonitorRecorder m_dacmonScope{kTick_s}; // the bench's oscilloscope on DACMON (kept over a power cycle)
     double m_encoderOut_counts = 0;  // emitted by the encoder output (ENC.OUT > 0), quadrature counts
     double m_lastShaft_counts = 0;
@@ -181,7 +189,9 @@ private:
     bool m_disableEvent = false;
     std::string m_logon; // "/nnn" being received
     bool m_inLogon = false;
-    const DriveIndex& ix() const; // catalog indices of the variables the drive computes or reacts to
+    // Catalog indices of the variables the drive computes or reacts to (looked up once, read every tick).
+    const DriveIndex& ix() const { return *m_ix; }
+    const DriveIndex* m_ix;
 };
 
 } // namespace drive_core::sc750

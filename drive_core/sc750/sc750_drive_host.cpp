@@ -110,10 +110,6 @@ const DriveIndex& driveIndex() {
     return index;
 }
 
-double Sc750Drive::num(int index) const {
-    return toDouble(m_values[std::size_t(index)]);
-}
-
 GearSettings Sc750Drive::gearSettings() const {
     const DriveIndex& x = ix();
     // the last of RATIO and PULSES.IN/PULSES.OUT written defines the ratio (L1622-L1624)

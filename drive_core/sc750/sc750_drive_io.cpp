@@ -13,13 +13,6 @@ namespace drive_core::sc750 {
 
 namespace cat = catalog::sc750;
 
-namespace {
-// One tick of a first-order low-pass with its corner at corner_Hz.
-double lowPass(double filtered, double input, double corner_Hz) {
-    const double alpha = 1.0 - std::exp(-2.0 * std::numbers::pi * corner_Hz * kTick_s);
-    return filtered + (input - filtered) * alpha;
-}
-} // namespace
 
 // The signal DACMAP selects, scaled to volts (L2147-L2175): DMGAIN multiplies every source but ANALOG.OUT;
 // position signals roll over at ±5 V, the others clamp there.
@@ -55,10 +48,18 @@ double Sc750Drive::dacSignal_V() {
     return std::clamp(volts, -5.0, 5.0);
 }
 
+double Sc750Drive::LowPass::operator()(double filtered, double input, double corner) {
+    if (corner != corner_Hz) {
+        corner_Hz = corner;
+        alpha = 1.0 - std::exp(-2.0 * std::numbers::pi * corner * kTick_s);
+    }
+    return filtered + (input - filtered) * alpha;
+}
+
 void Sc750Drive::analogTick() {
     const double sampled = std::clamp(m_analogIn_V, -12.0, 12.0) + num(ix().adoffset);
-    m_analogInFiltered_V = std::clamp(lowPass(m_analogInFiltered_V, sampled, num(ix().adf0)), -12.0, 12.0);
-    m_dacmon_V = lowPass(m_dacmon_V, dacSignal_V(), num(ix().dmf0));
+    m_analogInFiltered_V = std::clamp(m_adf0(m_analogInFiltered_V, sampled, num(ix().adf0)), -12.0, 12.0);
+    m_dacmon_V = m_dmf0(m_dacmon_V, dacSignal_V(), num(ix().dmf0));
     // The second probe: the net velocity command at DACMAP 2's scale, 1 V/kRPM (DECISIONS 55).
     m_dacmonScope.push(m_dacmon_V, m_servo.velocityCommand_cps() / kCpsPerRpm / 1000.0,
                        std::chrono::duration<double>(m_now).count());

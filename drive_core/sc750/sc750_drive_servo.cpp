@@ -45,6 +45,7 @@ void Sc750Drive::servoTick(bool en) {
         const double offset = m_motion.positionCommand_counts() - m_motion.shaft_counts();
         m_motion.setShaftCommand(kAnalogPosition_RevPerV * kCountsPerRev * s.cmdgain * m_analogInFiltered_V - offset);
     }
+    m_controllerPeak_A = s.controllerPeak_A;
     ServoCommand c;
     c.enabled = en;
     c.position_counts = m_motion.shaft_counts();
@@ -63,7 +64,7 @@ void Sc750Drive::servoFaults() {
     if (!m_enableInput || num(ix().enable) != 1) m_servoFault = 0;
     if (m_servoFault != 0) return;
     const double speed_rpm = std::abs(m_servo.velocity_cps()) / kCpsPerRpm;
-    const double itLimit_A = num(ix().itthresh) / 100.0 * servoSettings().controllerPeak_A;
+    const double itLimit_A = num(ix().itthresh) / 100.0 * m_controllerPeak_A;
     if (speed_rpm > kOverspeed_rpm)
         m_servoFault = cat::kFaultOverspeed;
     else if (m_servo.itFiltered_A() > itLimit_A)

@@ -42,12 +42,6 @@ std::string printText(const Value& v) {
     return strText(v) + " ";
 }
 
-double toDouble(const Value& v) {
-    if (const auto* i = std::get_if<std::int32_t>(&v)) return *i;
-    if (const auto* f = std::get_if<float>(&v)) return *f;
-    return 0;
-}
-
 std::optional<std::int32_t> toInteger(double x) {
     if (!std::isfinite(x)) return std::nullopt;
     const double r = std::nearbyint(x); // the default rounding mode: half to even

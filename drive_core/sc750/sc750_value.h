@@ -20,7 +20,11 @@ std::string printText(const Value& v);
 // STR$: leading space for non-negative numbers, none after.
 std::string strText(const Value& v);
 
-double toDouble(const Value& v); // strings: 0
+inline double toDouble(const Value& v) { // strings: 0 (inline: the drive reads its variables every tick)
+    if (const auto* i = std::get_if<std::int32_t>(&v)) return *i;
+    if (const auto* f = std::get_if<float>(&v)) return *f;
+    return 0;
+}
 // Round half to even into int32 (QuickBASIC CINT); nullopt when out of range.
 std::optional<std::int32_t> toInteger(double x);
 // Converts v to type; nullopt when a number does not fit an INTEGER or a string meets a number.

@@ -111,14 +111,51 @@ void Vm::tick(std::int64_t tickCount, int budget) {
         }
         if (m_wait != Wait::None && !resolveWait(tickCount)) return;
     }
+    // A loop that only reads (WHILE MOVING : WEND, the manual's idiom) repeats the same pass until the tick
+    // ends: nothing it reads changes within a tick (the drive's state moves between ticks) and it changes
+    // nothing. Once a whole pass has gone round unchanged, the budget's whole passes are skipped and only the
+    // remainder runs, so the program ends the tick at exactly the instruction it would have reached.
     const auto& code = m_program->code;
+    int loopHead = -1;          // where the last backward jump went
+    int loopBudget = 0;         // the budget then
+    std::size_t loopStack = 0;  // the stack depth then
+    std::int64_t loopInterrupts = 0;
     while (budget-- > 0 && m_state == State::Running && m_wait == Wait::None) {
         if (m_attention && !attend()) return;
         if (m_pc < 0 || std::size_t(m_pc) >= code.size()) {
             m_state = State::Ended;
             return;
         }
-        execute(code[std::size_t(m_pc++)]);
+        const int at = m_pc++;
+        const Instruction& ins = code[std::size_t(at)];
+        execute(ins);
+        if (!readsOnly(ins.op)) {
+            loopHead = -1;
+            continue;
+        }
+        if ((ins.op != Op::Jump && ins.op != Op::JumpIfZero) || m_pc > at) continue; // not a backward jump
+        if (loopHead == m_pc && loopStack == m_stack.size() && loopInterrupts == m_interruptsEntered &&
+            m_state == State::Running) {
+            budget %= loopBudget - budget; // a pass took that many: whole passes change nothing
+            loopHead = -1;
+            continue;
+        }
+        loopHead = m_pc;
+        loopBudget = budget;
+        loopStack = m_stack.size();
+        loopInterrupts = m_interruptsEntered;
+    }
+}
+
+bool Vm::readsOnly(Op op) {
+    switch (op) {
+    case Op::Nop: case Op::PushI: case Op::PushF: case Op::PushS: case Op::LoadV: case Op::LoadA: case Op::LoadP:
+    case Op::IntToFloat: case Op::FloatToInt: case Op::AddI: case Op::SubI: case Op::MulI: case Op::ModI:
+    case Op::NegI: case Op::AddF: case Op::SubF: case Op::MulF: case Op::DivF: case Op::PowF: case Op::NegF:
+    case Op::Concat: case Op::CompareI: case Op::CompareF: case Op::CompareS: case Op::And: case Op::Or:
+    case Op::Xor: case Op::Not: case Op::Jump: case Op::JumpIfZero:
+        return true;
+    default: return false; // writes, calls (RND, INKEY$ ...), I/O, motion, GOSUB/RETURN, FOR's counter
     }
 }
 
@@ -137,6 +174,7 @@ bool Vm::attend() {
 }
 
 void Vm::enterInterrupt(int source) {
+    ++m_interruptsEntered;
     m_interrupt = Frame{m_pc, m_wait, m_pauseUntil, m_stack.size(), m_gosub.size()};
     m_wait = Wait::None;
     m_pc = m_program->interrupts[std::size_t(source)];

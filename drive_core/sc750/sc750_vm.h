@@ -44,6 +44,8 @@ public:
     std::vector<int> breakpointLines() const;
 
     State state() const { return m_state; }
+    int pc() const { return m_pc; } // the next instruction
+    std::size_t stackDepth() const { return m_stack.size(); }
     Wait wait() const { return m_wait; }
     bool running() const { return m_state == State::Running; }
     int currentLine() const { return m_program ? m_program->lineAt(m_pc) : 0; }
@@ -68,6 +70,8 @@ private:
     bool attend(); // breakpoints and interrupts at a statement boundary; false: stop running this tick
     bool resolveWait(std::int64_t tickCount);
     void enterInterrupt(int source);
+    // The instruction only reads (variables, the drive's values, constants) and computes or jumps.
+    static bool readsOnly(Op op);
     void runtimeError(const std::string& message);
     void clearVariables(bool keepNonVolatile);
     void updateAttention();
@@ -93,6 +97,7 @@ private:
     State m_state = State::NoProgram;
     Wait m_wait = Wait::None;
     std::int64_t m_tick = 0;
+    std::int64_t m_interruptsEntered = 0; // a pass of a loop that took an interrupt is not a repeat
     std::int64_t m_pauseUntil = 0;
     // WHEN in progress
     int m_whenSource = 0, m_whenRelation = 0, m_whenAction = 0, m_whenArg = 0;
