@@ -46,8 +46,13 @@ void FamilyTuningRunner::attach(serialport::DriveSession* session, serialport::L
         if (!values.isEmpty()) m_polled.append({clock_s(), values.first()});
         m_poller->poll({m_profile.watch});
     });
-    connect(m_poller, &serialport::WatchPoller::failed, this, [this](const QString& reason, bool) {
-        if (m_polling) fail(tr("Polling %1 failed: %2").arg(m_profile.watch, reason));
+    // A refusal ends the run; a poll that went unanswered (a busy line, a slow adapter) is a missed sample,
+    // counted and shown with the run, and polling goes on.
+    connect(m_poller, &serialport::WatchPoller::failed, this, [this](const QString& reason, bool refused) {
+        if (!m_polling) return;
+        if (refused) return fail(tr("Polling %1 failed: %2").arg(m_profile.watch, reason));
+        ++m_missedPolls;
+        m_poller->poll({m_profile.watch});
     });
     // One line in flight at a time: the front batch's next line.
     m_answered = connect(session, &serialport::DriveSession::answered, this,
@@ -152,6 +157,7 @@ void FamilyTuningRunner::startRun() {
         m_runGains = m_gains; // every gain written before the run has been answered by now: lines go in order
         if (!qobject_cast<serialport::SimulatorLink*>(m_link.data())) { // a real drive: poll while the move runs
             m_polled.clear();
+            m_missedPolls = 0;
             m_polling = true;
             m_poller->poll({m_profile.watch});
         }
@@ -211,7 +217,9 @@ void FamilyTuningRunner::capture() {
     scope::CaptureChannel channel{m_profile.watch.toStdString(), m_profile.watchUnit.toStdString(), {}};
     for (const auto& [t, v] : m_polled) channel.values.push_back(v);
     c.channels.push_back(std::move(channel));
-    finishRun(std::move(c), tr("%1 polled, %2 samples/s").arg(m_profile.watch).arg(1.0 / c.interval_s, 0, 'f', 1));
+    QString source = tr("%1 polled, %2 samples/s").arg(m_profile.watch).arg(1.0 / c.interval_s, 0, 'f', 1);
+    if (m_missedPolls > 0) source += tr(", %n poll(s) unanswered", nullptr, m_missedPolls);
+    finishRun(std::move(c), source);
 }
 
 void FamilyTuningRunner::finishRun(scope::Capture capture, const QString& source) {

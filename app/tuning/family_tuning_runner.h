@@ -112,6 +112,7 @@ private:
     bool m_continuous = false;
     double m_start_s = 0;    // the clock when the move's last start line was sent: the drive cannot start earlier
     double m_lastSent_s = 0; // the clock when pump() last sent a line
+    int m_missedPolls = 0;   // polls of this run that went unanswered (a real port)
     QTimer m_wait;
     std::function<void()> m_then;
     double m_until_s = 0;

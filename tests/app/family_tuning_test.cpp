@@ -1,7 +1,9 @@
 // Tuning the SC750 and the PMC-960 in the IDE (issue 18): the Tuning Panel of each family reads the gains from
 // the simulated drive, runs its manual's test move, and shows the response the bench's oscilloscope saw on the
 // analog monitor output (SC750 DACMON at DACMAP 1, the PMC-960's tach) with its measurements; a gain raised
-// makes the next run faster, and undo puts the earlier run's gains back on the drive.
+// makes the next run faster, and undo puts the earlier run's gains back on the drive. The Frequency Response
+// of a run (the bench's command probe against its output) widens with the velocity gain. On a serial port the
+// runner polls the speed instead.
 #include "app/main_window.h"
 #include "app/pmc960/pmc960_workspace.h"
 #include "app/sc750/sc750_workspace.h"
@@ -19,12 +21,14 @@
 #include <QLabel>
 #include <QDoubleSpinBox>
 #include <QMenu>
+#include <QProcess>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
 
@@ -246,6 +250,56 @@ private slots:
         panel->gainEditor(QStringLiteral("VLGAIN"))->blockSignals(false);
         button(panel, QStringLiteral("Read from Drive"))->click();
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainEditor(QStringLiteral("VLGAIN"))->value(), 16.0, kTimeoutMs);
+    }
+
+    // A drive on a serial port (servodesk-sim behind a pty: the bytes a real PMC-960 would get) has no bench
+    // oscilloscope: the runner polls V! while the jog runs and measures that, saying so and at what rate.
+    // This test needs real time (a real process and port); each wait ends at its event, and ctest stretches the
+    // port's time-outs for a loaded machine (SERVODESK_TIMEOUT_SCALE in tests/app/CMakeLists.txt).
+    void pmc960OnAPortPollsTheSpeed() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath(QStringLiteral("drive"));
+        QProcess sim;
+        sim.setProgram(QStringLiteral(SERVODESK_SIM));
+        sim.setArguments({QStringLiteral("--drive"), QStringLiteral("pmc960"), QStringLiteral("--pty"),
+                          QStringLiteral("--link"), link});
+        sim.start();
+        QVERIFY(sim.waitForStarted(kTimeoutMs));
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), kTimeoutMs);
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        app::ConnectionChoice choice = app::ConnectionChoice::serialPort(link, 9600);
+        choice.family = DriveFamily::Pmc960;
+        window.connectDrive(choice);
+        auto& ws = *window.workspace(DriveFamily::Pmc960);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
+        QVERIFY(panel);
+        panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(100);
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("FFGAIN")), QStringLiteral("\u2713"), kTimeoutMs);
+        panel->movePreset()->setCurrentIndex(0);
+        panel->hold()->setValue(600);
+        // The plateau V! showed during a jog of `amplitude`: the value most samples had away from rest.
+        const auto plateau = [&](int amplitude, QString* why) {
+            panel->amplitude()->setValue(amplitude);
+            const app::FamilyTuningRun* run = runOnce(*panel);
+            if (!run) return 0.0;
+            *why = run->source;
+            if (!run->source.startsWith(QStringLiteral("V polled")) || run->capture.channels.size() != 1) return 0.0;
+            QMap<double, int> counts;
+            for (double v : run->capture.channels.front().values) counts[v] += v != 0;
+            return std::max_element(counts.begin(), counts.end()).key();
+        };
+        QString why;
+        const double slow = plateau(41, &why);
+        QVERIFY2(slow > 0, qPrintable(why + QLatin1Char(' ') + panel->statusText()));
+        // Twice the jog, twice the speed V! reports (a relation: V!'s units are the drive's own, L833).
+        const double fast = plateau(82, &why);
+        QVERIFY2(std::abs(fast / slow - 2) < 0.1, qPrintable(QStringLiteral("%1 then %2: %3").arg(slow).arg(fast).arg(why)));
+        sim.kill();
+        sim.waitForFinished(kTimeoutMs);
     }
 };
 
