@@ -392,7 +392,9 @@ private slots:
         app::Pmc960StatusDock* status = ws.statusDock();
         QTRY_COMPARE_WITH_TIMEOUT(status->value(QStringLiteral("position")), QStringLiteral("0"), kTimeoutMs);
         newMplTab(window, QStringLiteral("move.mpl"),
-                  QStringLiteral("@M_Ten_turns_slowly\nSM2\nA4000\nV100\nI40960+,\nG!\nE\n")); // about 4 s
+                  QStringLiteral("@M_Ten_turns_slowly\nSM2\nA4000\nV40\nI40960+,\nG!\nE\n")); // about 10 s
+        // Ten seconds of the simulator's real time: under load (ctest -j 4 beside CPU hogs) the GUI thread may
+        // poll the status only every few seconds, and a 4 s routine once ended between two of its updates.
         QVERIFY(downloadCurrentTab(ws));
         QSignalSpy finished(&ws.runner(), &app::Pmc960RoutineRunner::finished);
         ws.runner().run(QLatin1Char('M'), false);
