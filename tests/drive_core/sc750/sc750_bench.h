@@ -62,4 +62,16 @@ private:
     bool m_inFrame = false;
 };
 
+// An enabled drive with no program, its variables set by name first (the servo tests).
+struct ServoBench {
+    Bench b{"END\n", false};
+
+    explicit ServoBench(std::initializer_list<std::pair<const char*, std::string>> settings = {}) {
+        for (const auto& [name, value] : settings) EXPECT_EQ(b.drive.writeNamed(name, value), "") << name;
+        EXPECT_EQ(b.drive.writeNamed("ENABLE", "1"), "");
+    }
+    double value(const char* name) { return b.value(name); }
+    void set(const char* name, const std::string& value) { EXPECT_EQ(b.drive.writeNamed(name, value), "") << name; }
+};
+
 } // namespace sc750_test

@@ -18,15 +18,8 @@ constexpr drive_core::Microseconds kTick{427};
 constexpr int kGoVel = 1, kGoIncr = 2; // Sc750Drive::realTimeCall kinds (GO.VEL, GO.INCR)
 
 // An enabled drive with no program, gains set by name.
-struct Servo {
-    Bench b{"END\n", false};
-
-    explicit Servo(std::initializer_list<std::pair<const char*, std::string>> settings = {}) {
-        for (const auto& [name, value] : settings) EXPECT_EQ(b.drive.writeNamed(name, value), "") << name;
-        EXPECT_EQ(b.drive.writeNamed("ENABLE", "1"), "");
-    }
-    double value(const char* name) { return b.value(name); }
-    void set(const char* name, const std::string& value) { EXPECT_EQ(b.drive.writeNamed(name, value), "") << name; }
+struct Servo : ServoBench {
+    using ServoBench::ServoBench;
     // Runs seconds of simulated time, sampling `name` every tick.
     std::vector<double> record(const char* name, double seconds) {
         std::vector<double> samples;

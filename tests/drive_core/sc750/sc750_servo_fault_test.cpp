@@ -19,14 +19,8 @@ constexpr drive_core::Microseconds kTick{427};
 constexpr double kTick_s = 0.000427;
 
 // An enabled drive with no program on the boiler-plate motor (R32G) and controller (MODEL 752).
-struct Servo {
-    Bench b{"END\n", false};
-
-    explicit Servo(std::initializer_list<std::pair<const char*, std::string>> settings = {}) {
-        for (const auto& [name, value] : settings) EXPECT_EQ(b.drive.writeNamed(name, value), "") << name;
-        EXPECT_EQ(b.drive.writeNamed("ENABLE", "1"), "");
-    }
-    double value(const char* name) { return b.value(name); }
+struct Servo : ServoBench {
+    using ServoBench::ServoBench;
     int fault() { return int(value("FAULTCODE")); }
     // Ticks until the drive shows a fault other than "enabled", at most `limit_s`; the time it took, or -1.
     double untilFault(double limit_s) {
