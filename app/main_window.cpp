@@ -113,6 +113,11 @@ void MainWindow::connectDrive(const ConnectionChoice& choice) {
     showFamily(choice.family);
     if (next) {
         m_connection->disconnectDrive(); // one family on the port at a time
+        // The terminal is shared by the families: a line says where what follows comes from.
+        const QString where = choice.kind == ConnectionChoice::Kind::Simulator
+                                  ? choice.portText()
+                                  : tr("%1 on %2").arg(ConnectionChoice::familyName(choice.family), choice.portText());
+        terminal()->displayNotice(tr("Connecting to %1").arg(where));
         next->activate(choice);
         updateLinkStatus();
         return;

@@ -138,6 +138,20 @@ FileResult ProgramEditor::loadFile(const QString& path) {
     return {};
 }
 
+FileResult ProgramEditor::reloadFile(const QString& path) {
+    ProgramText read = readProgramText(path);
+    if (!read.result.ok) return read.result;
+    m_encoding = read.encoding;
+    setEolMode(read.crlf ? QsciScintilla::EolWindows : QsciScintilla::EolUnix);
+    beginUndoAction();
+    selectAll();
+    replaceSelectedText(read.text);
+    endUndoAction();
+    setModified(false); // the save point: undo marks the tab modified again
+    m_filePath = path;
+    return {};
+}
+
 FileResult ProgramEditor::saveFile(const QString& path) {
     // Write the line endings the file had, even where a paste brought in others.
     convertEols(eolMode());

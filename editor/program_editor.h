@@ -31,6 +31,9 @@ public:
 
     // Replaces the text with the file's; on success the editor is unmodified and filePath() is path.
     FileResult loadFile(const QString& path);
+    // The file again, as the tab's path says, in place of the text: one undo step, so Edit > Undo brings back
+    // what the tab showed (unsaved edits included). Refused like loadFile, the text untouched.
+    FileResult reloadFile(const QString& path);
     // Writes the text atomically, in the encoding and line endings it was loaded with (UTF-8 when the
     // text has characters Latin-1 cannot hold). On success the editor is unmodified and filePath() is path.
     FileResult saveFile(const QString& path);

@@ -69,7 +69,7 @@ void DiskWatcher::reopened(editor::ProgramEditor* editor) {
     if (editor->isModified()) {
         // Opening the file again asks for the disk's version; the tab's edits are not thrown away unasked.
         ask(editor,
-            tr("<b>%1</b> is already open, with unsaved edits. Reload it from disk (your edits are discarded) "
+            tr("<b>%1</b> is already open, with unsaved edits. Reload it from disk (Edit > Undo brings your edits back) "
                "or keep your edits?")
                 .arg(nameOf(editor).toHtmlEscaped()),
             tr("&Keep My Edits"));
@@ -145,7 +145,7 @@ DiskWatcher::Outcome DiskWatcher::examine(editor::ProgramEditor* editor) {
     entry.digest = digest; // looked at: the same content is not reloaded or asked about again
     if (!editor->isModified()) return reloadNow(editor);
     ask(editor,
-        tr("<b>%1</b> changed on disk, and this tab has unsaved edits. Reload it (your edits are discarded) or "
+        tr("<b>%1</b> changed on disk, and this tab has unsaved edits. Reload it (Edit > Undo brings your edits back) or "
            "keep your edits (Save writes them over the file)?")
             .arg(name.toHtmlEscaped()),
         tr("&Keep My Edits"));
@@ -161,7 +161,7 @@ DiskWatcher::Outcome DiskWatcher::reloadNow(editor::ProgramEditor* editor, bool 
     editor->getCursorPosition(&line, &index);
     const int top = editor->firstVisibleLine();
     // loadFile refuses a binary or oversized file whole and leaves the tab as it was (issue 19, item 7).
-    if (const editor::FileResult result = editor->loadFile(entry.path); !result.ok) {
+    if (const editor::FileResult result = editor->reloadFile(entry.path); !result.ok) {
         ask(editor,
             tr("<b>%1</b> changed on disk, but the tab cannot show the new file: %2 The tab keeps the text it had.")
                 .arg(name.toHtmlEscaped(), result.message.toHtmlEscaped()),

@@ -5,6 +5,7 @@
 #include "scope/measurements_table.h"
 #include "scope/scope_view.h"
 
+#include <QColor>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -247,14 +248,23 @@ void FamilyTuningPanel::addRun(const FamilyTuningRun& run) {
                                                    : QStringLiteral("\u2014"),
                                ms(run.metrics.rise_s),
                                ms(run.metrics.settling_s),
-                               run.source};
+                               run.fault.isEmpty() ? run.source : tr("FAULT %1; %2").arg(run.fault, run.source)};
     for (int c = 0; c < int(cells.size()); ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
         item->setTextAlignment(c == 1 || c == 5 ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
+        if (!run.fault.isEmpty()) {
+            item->setForeground(QColor(0xb0, 0x00, 0x20));
+            item->setToolTip(tr("The drive faulted during this run: %1").arg(run.fault));
+        }
         m_runsTable->setItem(row, c, item);
     }
     m_runsTable->scrollToBottom();
     if (m_bode && m_bode->isVisible() && m_runsTable->currentRow() < 0) showBode(); // follows the newest run
+    if (!run.fault.isEmpty())
+        return setStatus(tr("Run %1: the drive faulted — %2. The response is shown up to the fault; the next run "
+                            "clears it first (%3).")
+                             .arg(run.number)
+                             .arg(run.fault, m_runner->profile().clearFault.join(QStringLiteral(", "))));
     if (!run.metrics.hasStep)
         return setStatus(tr("Run %1: the response did not move — is the drive enabled and the move allowed?").arg(run.number));
     setStatus(tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace app {
 
@@ -151,9 +152,11 @@ void FamilyTuningRunner::startRun() {
     emit runStarted(int(m_runs.size()) + 1);
     emit stateChanged();
     const auto failed = [this](const QString& why) { fail(tr("The drive refused %1").arg(why)); };
-    const QStringList prepare = m_prepared ? QStringList() : m_profile.prepare;
+    const QStringList prepare = (m_faulted ? m_profile.clearFault : QStringList()) +
+                                (m_prepared ? QStringList() : m_profile.prepare);
     sendAll(prepare, [this, failed](const QList<serialport::LineAnswer>&) {
         m_prepared = true;
+        m_faulted = false;
         m_runGains = m_gains; // every gain written before the run has been answered by now: lines go in order
         if (!qobject_cast<serialport::SimulatorLink*>(m_link.data())) { // a real drive: poll while the move runs
             m_polled.clear();
@@ -205,7 +208,7 @@ void FamilyTuningRunner::capture() {
             const QString source = tr("bench oscilloscope on %1, %2 samples/s")
                                        .arg(QString::fromStdString(trace.signal))
                                        .arg(1.0 / trace.interval_s, 0, 'f', 0);
-            self->finishRun(std::move(c), source);
+            self->checkFault(std::move(c), source);
         });
     }
     // A real drive: the polled samples, evenly spaced over their span (the link's own pace).
@@ -219,10 +222,21 @@ void FamilyTuningRunner::capture() {
     c.channels.push_back(std::move(channel));
     QString source = tr("%1 polled, %2 samples/s").arg(m_profile.watch).arg(1.0 / c.interval_s, 0, 'f', 1);
     if (m_missedPolls > 0) source += tr(", %n poll(s) unanswered", nullptr, m_missedPolls);
-    finishRun(std::move(c), source);
+    checkFault(std::move(c), source);
 }
 
-void FamilyTuningRunner::finishRun(scope::Capture capture, const QString& source) {
+void FamilyTuningRunner::checkFault(scope::Capture capture, const QString& source) {
+    // The capture waits in the callback while the drive is asked; a drive that cannot say adds no run.
+    auto held = std::make_shared<scope::Capture>(std::move(capture));
+    sendAll(
+        m_profile.faultCheck,
+        [this, held, source](const QList<serialport::LineAnswer>& answers) {
+            if (m_running) finishRun(std::move(*held), source, m_profile.faultIn(answers));
+        },
+        [this](const QString& why) { fail(tr("Reading the drive's fault state failed: %1").arg(why)); });
+}
+
+void FamilyTuningRunner::finishRun(scope::Capture capture, const QString& source, const QString& fault) {
     FamilyTuningRun run;
     run.number = int(m_runs.size()) + 1;
     run.gains = m_runGains;
@@ -239,6 +253,12 @@ void FamilyTuningRunner::finishRun(scope::Capture capture, const QString& source
     run.metrics = scope::analyseStep(std::span(values.data(), half), capture.interval_s);
     run.capture = std::move(capture);
     run.source = source;
+    run.fault = fault;
+    if (!fault.isEmpty()) {
+        m_faulted = true;
+        m_prepared = false; // the fault disabled the drive: prepare again after clearing it
+        m_continuous = false;
+    }
     m_runs.append(run);
     m_running = false;
     emit runFinished(m_runs.back());

@@ -35,6 +35,8 @@ struct FamilyTuningRun {
     scope::Capture capture;      // one channel: the monitor's volts, or the polled variable
     scope::StepMetrics metrics;  // of the step's first half (until the move goes back)
     QString source;              // "bench oscilloscope: DACMON: VELOCITY, 1 V/kRPM, 2342 samples/s"
+    QString fault;               // the fault the drive reported after the run ("" when none): the
+                                 // response is shown up to it; Run Continuously stops
 };
 
 class FamilyTuningRunner final : public QObject {
@@ -83,7 +85,8 @@ private:
     void afterStart();
     void afterBack();
     void capture();
-    void finishRun(scope::Capture capture, const QString& source);
+    void checkFault(scope::Capture capture, const QString& source); // then finishRun
+    void finishRun(scope::Capture capture, const QString& source, const QString& fault);
     void fail(const QString& why);
     void endRuns();
     double clock_s() const; // the drive's clock on the simulator, the wall's on a real link
@@ -108,6 +111,7 @@ private:
     int m_amplitude = 0;
     int m_holdMs = 300;
     bool m_prepared = false;
+    bool m_faulted = false; // the last run ended in a fault: the next sends the profile's clearFault first
     bool m_running = false;
     bool m_continuous = false;
     double m_start_s = 0;    // the clock when the move's last start line was sent: the drive cannot start earlier

@@ -4,6 +4,7 @@
 #include "tuning_profile.h"
 
 #include "drive_core/catalog/drive_catalog.h"
+#include "drive_core/catalog/sc750_catalog.h"
 
 #include <QRegularExpression>
 
@@ -53,6 +54,9 @@ TuningProfile sc750() {
     p.watch = QStringLiteral("RVEL");
     p.watchUnit = QStringLiteral("RPM");
     for (const TuningGain& g : p.gains) p.readGains << g.parameter;
+    // DECISIONS 56: a servo fault latches (FAULTCODE shows it) until ENABLE is written 0; prepare enables again.
+    p.faultCheck = {QStringLiteral("FAULTCODE")};
+    p.clearFault = {QStringLiteral("ENABLE=0")};
     return p;
 }
 
@@ -89,6 +93,10 @@ TuningProfile pmc960() {
     p.watch = QStringLiteral("V");
     p.watchUnit = QStringLiteral("V units");
     p.readGains = {QStringLiteral("TG?")};
+    // The following-error trip returns the drive to IDLE (L223) with #E1, cleared by SM0 then SM1 or SM2
+    // (L2382): every move starts with its SM, so SM0 is all a next run needs first.
+    p.faultCheck = {QStringLiteral("SM!"), QStringLiteral("SE?")};
+    p.clearFault = {QStringLiteral("SM0")};
     return p;
 }
 } // namespace
@@ -137,6 +145,30 @@ QMap<QString, double> TuningProfile::parseGains(const QList<serialport::LineAnsw
         if (ok && answers[i].ok()) out.insert(gains[i].name, value);
     }
     return out;
+}
+
+QString TuningProfile::faultIn(const QList<serialport::LineAnswer>& answers) const {
+    const auto text = [this](int code) {
+        const cat::ErrorEntry* e = cat::findError(family, code);
+        if (!e) return QString::number(code);
+        return QString::fromStdString(e->codeText) + QLatin1Char(' ') +
+               QString::fromUtf8(e->message.data(), qsizetype(e->message.size()));
+    };
+    const auto lastWord = [&answers](int i) {
+        return answers.value(i).lines.join(QLatin1Char(' ')).trimmed().section(QLatin1Char(' '), -1);
+    };
+    if (family == drive_core::DriveFamily::Pmc960) {
+        // Every move puts the drive in SM1 or SM2; IDLE after it means the drive stopped itself.
+        bool ok = false;
+        const int mode = lastWord(0).toInt(&ok);
+        if (!ok || mode != 0) return {};
+        const int code = lastWord(1).toInt(&ok, 16);
+        return ok && code != 0 ? text(code) : QStringLiteral("the drive went to IDLE (SM0)");
+    }
+    bool ok = false;
+    const int code = lastWord(0).toInt(&ok);
+    if (!ok || code == cat::sc750::kFaultNone || code == cat::sc750::kFaultEnabled) return {};
+    return text(code);
 }
 
 QStringList TuningProfile::lines(const QStringList& pattern, int amplitude) const {

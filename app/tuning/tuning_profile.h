@@ -47,6 +47,10 @@ struct TuningProfile {
     QString watch;         // on a real drive, the variable polled instead (watch_choices): "RVEL", "V"
     QString watchUnit;     // its unit: "RPM", "V units"
     QStringList readGains; // the lines that read every gain back
+    // Read after every run: whether the drive faulted during it (SC750 FAULTCODE; PMC-960 SM! and SE?, the
+    // following-error trip drops it to IDLE), and the lines a next run sends first to clear the fault.
+    QStringList faultCheck;
+    QStringList clearFault;
 
     const TuningGain* gain(const QString& name) const;
     // The lines that set one gain ("KVP=0.1"; "SW1", "TGV20", "SW0"); the answer to the line at
@@ -55,6 +59,8 @@ struct TuningProfile {
     int writeLineIndex() const { return family == drive_core::DriveFamily::Pmc960 ? 1 : 0; }
     // The gains in the drive's answers to readGains (same order); those it did not give are left out.
     QMap<QString, double> parseGains(const QList<serialport::LineAnswer>& answers) const;
+    // The fault in the drive's answers to faultCheck ("F 1 following error overflow: ..."); "" when none.
+    QString faultIn(const QList<serialport::LineAnswer>& answers) const;
     // The amplitude put into a move's lines.
     QStringList lines(const QStringList& pattern, int amplitude) const;
 };

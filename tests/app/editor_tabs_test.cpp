@@ -352,6 +352,13 @@ private slots:
         QCOMPARE(ed->text(), QStringLiteral("P \"THIRD\"\n"));
         QVERIFY(!ed->isModified());
         QVERIFY(!bar->isVisible());
+        // Reload is one undo step: the edits it replaced come back, and the tab is modified again.
+        ed->undo();
+        QCOMPARE(ed->text(), QStringLiteral("B\nJ 1\nJ 2\n"));
+        QVERIFY(ed->isModified());
+        ed->redo();
+        QCOMPARE(ed->text(), QStringLiteral("P \"THIRD\"\n"));
+        QVERIFY(!ed->isModified());
 
         // Asked, the user saves instead: the tab's text is on disk and the question goes.
         ed->append(QStringLiteral("J 9\n"));

@@ -112,6 +112,11 @@ private slots:
         probe->write("\r");
         QTRY_VERIFY2_WITH_TIMEOUT(probe->received.contains('}'), probe->received.constData(), kTimeoutMs);
         QTRY_COMPARE(labelText(window, "linkLabel"), QStringLiteral("Probe on PMC-960"));
+        // The shared terminal says where what follows comes from, after the BDS5's text.
+        const QString shown = window.terminal()->text();
+        const qsizetype bds5 = shown.lastIndexOf(QStringLiteral("Connected to Simulated BDS5"));
+        QVERIFY2(bds5 >= 0, qPrintable(shown));
+        QVERIFY2(shown.indexOf(QStringLiteral("Connecting to Simulated PMC-960, 9600 baud"), bds5) > bds5, qPrintable(shown));
 
         window.connectDrive(ConnectionChoice::simulator());
         QCOMPARE(window.activeFamily(), DriveFamily::Bds5);

@@ -252,6 +252,91 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainEditor(QStringLiteral("VLGAIN"))->value(), 16.0, kTimeoutMs);
     }
 
+    // A gain that makes the drive fault is seen, not measured as if nothing happened: with the position loop off
+    // (KPP 0, KVFF 0) the motor does not follow a 3,000 RPM step and the following error passes 32,767 counts
+    // (F 1, DECISIONS 56; L1522-L1588). The run is marked with the fault, Run Continuously stops at it, and the
+    // next run clears it (ENABLE=0, then the runs' ENABLE=1) and measures again.
+    void sc750FaultDuringARunIsShownAndCleared() {
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
+        auto& ws = *window.workspace(DriveFamily::Sc750);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("KPP"));
+        QVERIFY(panel);
+        const double kpp = panel->gainEditor(QStringLiteral("KPP"))->value();
+        QVERIFY(kpp > 0);
+        for (const char* gain : {"KVFF", "KPP"}) {
+            panel->gainEditor(QString::fromLatin1(gain))->setValue(0);
+            QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QString::fromLatin1(gain)), QStringLiteral("\u2713"), kTimeoutMs);
+        }
+        panel->movePreset()->setCurrentIndex(0);
+        panel->amplitude()->setValue(3000);
+        panel->hold()->setValue(300);
+        button(panel, QStringLiteral("Run Continuously"))->click();
+        QTRY_VERIFY_WITH_TIMEOUT(panel->runsTable()->rowCount() == 1, kTimeoutMs);
+        const app::FamilyTuningRun& faulted = panel->runner().runs().back();
+        QVERIFY2(faulted.fault.startsWith(QStringLiteral("F 1")), qPrintable(faulted.fault + " / " + panel->statusText()));
+        QVERIFY(!panel->runner().isRunning()); // a continuous series starts its next run as the last one ends
+        QVERIFY(!panel->runner().isContinuous());
+        QVERIFY(panel->runsTable()->item(0, 5)->text().startsWith(QStringLiteral("FAULT F 1")));
+        QVERIFY2(panel->statusText().contains(QStringLiteral("faulted")) &&
+                     panel->statusText().contains(QStringLiteral("ENABLE=0")),
+                 qPrintable(panel->statusText()));
+
+        panel->gainEditor(QStringLiteral("KPP"))->setValue(kpp);
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("KPP")), QStringLiteral("\u2713"), kTimeoutMs);
+        panel->gainEditor(QStringLiteral("KVFF"))->setValue(100);
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("KVFF")), QStringLiteral("\u2713"), kTimeoutMs);
+        panel->amplitude()->setValue(200);
+        const app::FamilyTuningRun* cleared = runOnce(*panel);
+        QVERIFY2(cleared, qPrintable(panel->statusText()));
+        QVERIFY2(cleared->fault.isEmpty(), qPrintable(cleared->fault));
+        QVERIFY2(cleared->metrics.hasStep, qPrintable(panel->statusText()));
+        const double plateau = meanBetween(cleared->capture, 0.1 + 0.02, 0.3); // 200 RPM at 1 V/kRPM
+        QVERIFY2(std::abs(plateau - 0.2) < 0.01, qPrintable(QString::number(plateau)));
+    }
+
+    // PMC-960: the following-error trip (SF, L1505-L1517) in the position loop returns the drive to IDLE with
+    // #E1 (L223, L2382). With SF 8 and FFGAIN off, the SM2 jog's following error passes the trip point: the
+    // run shows E1, and the next run (after SF back at its power-up 2048) clears it with SM0 and measures.
+    void pmc960FollowingErrorTripIsShownAndCleared() {
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
+        auto& ws = *window.workspace(DriveFamily::Pmc960);
+        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("FFGAIN"));
+        QVERIFY(panel);
+        panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(0);
+        QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("FFGAIN")), QStringLiteral("\u2713"), kTimeoutMs);
+        QVERIFY(ws.driveSession());
+        QSignalSpy answered(ws.driveSession(), &serialport::DriveSession::answered);
+        const quint64 sf = ws.driveSession()->sendLine(QStringLiteral("SF8")); // as typed in the terminal
+        QTRY_VERIFY_WITH_TIMEOUT(std::any_of(answered.begin(), answered.end(),
+                                             [sf](const QList<QVariant>& a) { return a.at(0).toULongLong() == sf; }),
+                                 kTimeoutMs);
+        panel->movePreset()->setCurrentIndex(1); // position loop, SM2
+        panel->hold()->setValue(200);
+        const app::FamilyTuningRun* tripped = runOnce(*panel);
+        QVERIFY2(tripped, qPrintable(panel->statusText()));
+        QVERIFY2(tripped->fault.startsWith(QStringLiteral("#E1")), qPrintable(tripped->fault + " / " + panel->statusText()));
+        QVERIFY(panel->runsTable()->item(0, 5)->text().startsWith(QStringLiteral("FAULT #E1")));
+        QVERIFY2(panel->statusText().contains(QStringLiteral("SM0")), qPrintable(panel->statusText()));
+
+        answered.clear();
+        const quint64 back = ws.driveSession()->sendLine(QStringLiteral("SF2048"));
+        QTRY_VERIFY_WITH_TIMEOUT(std::any_of(answered.begin(), answered.end(),
+                                             [back](const QList<QVariant>& a) { return a.at(0).toULongLong() == back; }),
+                                 kTimeoutMs);
+        const app::FamilyTuningRun* cleared = runOnce(*panel);
+        QVERIFY2(cleared, qPrintable(panel->statusText()));
+        QVERIFY2(cleared->fault.isEmpty(), qPrintable(cleared->fault));
+        QVERIFY2(cleared->metrics.hasStep, qPrintable(panel->statusText()));
+    }
+
     // A drive on a serial port (servodesk-sim behind a pty: the bytes a real PMC-960 would get) has no bench
     // oscilloscope: the runner polls V! while the jog runs and measures that, saying so and at what rate.
     // This test needs real time (a real process and port); each wait ends at its event, and ctest stretches the
