@@ -308,6 +308,37 @@ TEST(Pmc960Physics, TooMuchAnalogLockGainDithers) {
     EXPECT_GT(changesOfSf(255), 50); // in one second
 }
 
+// 4.8.6: "If position system dither on the least significant bit of the position feedback is a problem ...
+// raise the analog lock gain ... until the dither stops." A load holding the shaft against the position loop
+// (a vertical axis, belt tension) parks it on a count's edge: with the encoder's word alone the error flips
+// between 0 and 1 count and the loop kicks the shaft back and forth across the edge; the inter-LSB signal
+// turns the edge into a slope the loop can hold.
+TEST(Pmc960Physics, ALoadMakesTheLeastBitDitherUntilTheAnalogLockHoldsIt) {
+    // Changes of SF! over one second at rest after an index, with `load_Nm` on the bench (the motor's
+    // continuous torque is 3 N m).
+    auto changesOfSf = [](int lockGain, double load_Nm) {
+        TestDrive t;
+        prepare(t);
+        setTable(t, "TGL", lockGain);
+        t.drive.controls()->setLoadTorque_Nm(load_Nm);
+        t.type("I100+", 500ms);
+        int changes = 0;
+        double last = t.drive.state().motion.followingError_counts();
+        for (int ms = 0; ms < 1000; ++ms) {
+            t.drive.step(Microseconds{1000});
+            const double now = t.drive.state().motion.followingError_counts();
+            changes += now != last;
+            last = now;
+        }
+        return changes;
+    };
+    EXPECT_EQ(changesOfSf(0, 0), 0); // nothing pushes the shaft onto an edge
+    for (double load : {0.2, 1.0}) {
+        EXPECT_GT(changesOfSf(0, load), 50) << load << " N m, TGL0: the least bit dithers";
+        EXPECT_EQ(changesOfSf(8, load), 0) << load << " N m, TGL8: the analog lock holds";
+    }
+}
+
 // The bench: the master input clocks the reference in slave mode (THR bit 6); the motor choice changes the
 // machine (a larger motor, the same gains, another response).
 TEST(Pmc960Physics, MasterFrequencyDrivesASlaveAndTheMotorChoiceActs) {
