@@ -1,6 +1,8 @@
 // TuningPanel: layout and wiring; the runs table.
 #include "tuning_panel.h"
 
+#include "app/tuning/tuning_frame.h"
+
 #include "drive_connection.h"
 #include "gain_editor.h"
 #include "main_window.h"
@@ -13,14 +15,11 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSpinBox>
-#include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -33,9 +32,6 @@ const QStringList kRunColumns = {QStringLiteral("Run"),         QStringLiteral("
                                  QStringLiteral("Cycle (s)"),   QStringLiteral("\u00d7 ideal")};
 const int kBandwidths[] = {5, 10, 15, 20, 25, 30, 40, 50}; // Hz, the values TUNE allows (L6283)
 
-QString ms(const std::optional<double>& s) {
-    return s ? QString::number(*s * 1000, 'f', 1) : QStringLiteral("\u2014");
-}
 } // namespace
 
 TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
@@ -49,48 +45,16 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
     left->addWidget(buildTestMove());
     left->addWidget(buildTune());
     left->addStretch(1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(controls);
-    scroll->setWidgetResizable(true);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(340);
-    scroll->setMaximumWidth(400);
 
     m_runsTable->setObjectName(QStringLiteral("tuningRuns"));
-    m_runsTable->setColumnCount(int(kRunColumns.size()));
-    m_runsTable->setHorizontalHeaderLabels(kRunColumns);
-    m_runsTable->verticalHeader()->hide();
-    m_runsTable->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_runsTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_runsTable->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_runsTable->setSelectionMode(QAbstractItemView::SingleSelection);
+    setUpRunsTable(m_runsTable, kRunColumns);
     m_undo = new QPushButton(tr("Undo to Selected Run's Gains"), this);
     auto* save = new QPushButton(tr("Save Gains .VAR..."), this);
     auto* bode = new QPushButton(tr("Frequency Response..."), this);
-    auto* runsBox = new QWidget(this);
-    auto* runsLayout = new QVBoxLayout(runsBox);
-    runsLayout->setContentsMargins(0, 0, 0, 0);
-    runsLayout->addWidget(m_runsTable, 1);
-    auto* runsButtons = new QHBoxLayout;
-    runsButtons->addWidget(m_undo);
-    runsButtons->addWidget(save);
-    runsButtons->addWidget(bode);
-    runsButtons->addStretch(1);
-    runsLayout->addLayout(runsButtons);
-
-    auto* right = new QSplitter(Qt::Vertical, this);
-    right->addWidget(m_view);
-    right->addWidget(runsBox);
-    right->setStretchFactor(0, 3);
-    right->setStretchFactor(1, 1);
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(scroll);
-    layout->addWidget(right, 1);
+    layOutTuningFrame(this, controls, m_view, m_runsTable, {m_undo, save, bode});
 
     connect(m_undo, &QPushButton::clicked, this, [this] {
-        const int row = m_runsTable->currentRow();
-        if (row >= 0) m_runner->undoTo(m_runsTable->item(row, 0)->text().toInt());
+        if (const int run = selectedRunNumber(m_runsTable)) m_runner->undoTo(run);
     });
     connect(save, &QPushButton::clicked, this, &TuningPanel::saveGainsAs);
     connect(bode, &QPushButton::clicked, this, [this] { m_window.scopeController().frequencyResponse(); });
@@ -193,22 +157,15 @@ QWidget* TuningPanel::buildTestMove() {
     });
     connect(m_runner, &TuningRunner::driveValuesRead, this, &TuningPanel::updateProposal);
     connect(m_runner, &TuningRunner::gainConfirmed, this, &TuningPanel::updateProposal);
-    m_runOnce = new QPushButton(tr("Run Once"), box);
-    m_runLoop = new QPushButton(tr("Run Continuously"), box);
-    m_stop = new QPushButton(tr("Stop"), box);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_runOnce);
-    buttons->addWidget(m_runLoop);
-    buttons->addWidget(m_stop);
-    form->addRow(buttons);
+    const RunButtons run = addRunButtons(box, form);
+    m_runOnce = run.once;
+    m_runLoop = run.loop;
+    m_stop = run.stop;
     m_progress = new QProgressBar(box);
     m_progress->setTextVisible(false);
     m_progress->setMaximumHeight(8);
     form->addRow(m_progress);
-    m_status = new QLabel(box);
-    m_status->setObjectName(QStringLiteral("tuningStatus"));
-    m_status->setWordWrap(true);
-    form->addRow(m_status);
+    m_status = addStatusLine(box, form, QStringLiteral("tuningStatus"));
     m_warning = new QLabel(box);
     m_warning->setWordWrap(true);
     m_warning->setStyleSheet(QStringLiteral("color: #b3261e"));
@@ -343,25 +300,19 @@ QString TuningPanel::warningText() const {
 
 void TuningPanel::addRun(const TuningRun& run) {
     m_view->showCapture(run.capture, true);
-    const int row = m_runsTable->rowCount();
-    m_runsTable->insertRow(row);
     const QString changed = QString::fromStdString(run.capture.title).section(QStringLiteral(": "), 1);
-    const QStringList cells = {QString::number(run.number),
-                               changed.isEmpty() ? tr("(first)") : changed,
-                               run.metrics.hasStep ? QString::number(run.metrics.overshoot_pct, 'f', 1)
-                                                   : QStringLiteral("\u2014"),
-                               ms(run.metrics.rise_s),
-                               ms(run.metrics.settling_s),
-                               run.metrics.steadyStateError ? QString::number(*run.metrics.steadyStateError, 'f', 1)
-                                                            : QStringLiteral("\u2014"),
-                               QString::number(run.cycle_s, 'f', 2),
-                               QString::number(run.cycle_s / std::max(run.ideal_s, 1e-9), 'f', 2)};
-    for (int c = 0; c < int(cells.size()); ++c) {
-        auto* item = new QTableWidgetItem(cells[c]);
-        item->setTextAlignment(c == 1 ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
-        m_runsTable->setItem(row, c, item);
-    }
-    m_runsTable->scrollToBottom();
+    RunRow row;
+    row.cells = {QString::number(run.number),
+                 changed.isEmpty() ? tr("(first)") : changed,
+                 run.metrics.hasStep ? QString::number(run.metrics.overshoot_pct, 'f', 1) : QStringLiteral("\u2014"),
+                 milliseconds(run.metrics.rise_s),
+                 milliseconds(run.metrics.settling_s),
+                 run.metrics.steadyStateError ? QString::number(*run.metrics.steadyStateError, 'f', 1)
+                                              : QStringLiteral("\u2014"),
+                 QString::number(run.cycle_s, 'f', 2),
+                 QString::number(run.cycle_s / std::max(run.ideal_s, 1e-9), 'f', 2)};
+    row.leftAligned = {1};
+    appendRun(m_runsTable, row);
     m_progress->setValue(m_progress->maximum());
     m_warning->setVisible(run.currentSaturated);
     m_warning->setText(tr("ICMD reached ILIM in run %1: the current saturated, so the step shows the current "
@@ -370,7 +321,7 @@ void TuningPanel::addRun(const TuningRun& run) {
     QString status = tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
                          .arg(run.number)
                          .arg(run.metrics.overshoot_pct, 0, 'f', 1)
-                         .arg(ms(run.metrics.rise_s), ms(run.metrics.settling_s));
+                         .arg(milliseconds(run.metrics.rise_s), milliseconds(run.metrics.settling_s));
     if (run.softLimitsOff) status += tr(" The soft limits were off for it (PLIM=0); PLIM=1 follows the runs.");
     setStatus(status);
 }

@@ -1,22 +1,20 @@
 // FamilyTuningPanel: layout and wiring; the runs table.
 #include "family_tuning_panel.h"
 
+#include "tuning_frame.h"
+
 #include "app/scope/bode_view.h"
 #include "scope/measurements_table.h"
 #include "scope/scope_view.h"
 
-#include <QColor>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSpinBox>
-#include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -26,10 +24,6 @@ namespace {
 const QStringList kRunColumns = {QStringLiteral("Run"),       QStringLiteral("Gains changed"),
                                  QStringLiteral("Overshoot %"), QStringLiteral("Rise (ms)"),
                                  QStringLiteral("Settle (ms)"), QStringLiteral("Sampled")};
-
-QString ms(const std::optional<double>& s) {
-    return s ? QString::number(*s * 1000, 'f', 1) : QStringLiteral("\u2014");
-}
 } // namespace
 
 FamilyTuningPanel::FamilyTuningPanel(TuningProfile profile, QWidget* parent)
@@ -45,49 +39,17 @@ FamilyTuningPanel::FamilyTuningPanel(TuningProfile profile, QWidget* parent)
     left->addWidget(buildGains());
     left->addWidget(buildTestMove());
     left->addStretch(1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(controls);
-    scroll->setWidgetResizable(true);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(340);
-    scroll->setMaximumWidth(400);
 
     m_runsTable->setObjectName(QStringLiteral("familyTuningRuns"));
-    m_runsTable->setColumnCount(int(kRunColumns.size()));
-    m_runsTable->setHorizontalHeaderLabels(kRunColumns);
-    m_runsTable->verticalHeader()->hide();
-    m_runsTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_runsTable->horizontalHeader()->setStretchLastSection(true);
-    m_runsTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_runsTable->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_runsTable->setSelectionMode(QAbstractItemView::SingleSelection);
+    setUpRunsTable(m_runsTable, kRunColumns);
     m_undo = new QPushButton(tr("Undo to Selected Run's Gains"), this);
     m_bodeButton = new QPushButton(tr("Frequency Response..."), this);
     m_bodeButton->setToolTip(tr("The velocity loop's Bode plot (%1 \u2192 %2) of the selected run, or the last")
                                  .arg(m_runner->profile().command, m_runner->profile().monitor));
-    auto* runsBox = new QWidget(this);
-    auto* runsLayout = new QVBoxLayout(runsBox);
-    runsLayout->setContentsMargins(0, 0, 0, 0);
-    runsLayout->addWidget(m_runsTable, 1);
-    auto* runsButtons = new QHBoxLayout;
-    runsButtons->addWidget(m_undo);
-    runsButtons->addWidget(m_bodeButton);
-    runsButtons->addStretch(1);
-    runsLayout->addLayout(runsButtons);
-
-    auto* right = new QSplitter(Qt::Vertical, this);
-    right->addWidget(m_view);
-    right->addWidget(runsBox);
-    right->setStretchFactor(0, 3);
-    right->setStretchFactor(1, 1);
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(scroll);
-    layout->addWidget(right, 1);
+    layOutTuningFrame(this, controls, m_view, m_runsTable, {m_undo, m_bodeButton});
 
     connect(m_undo, &QPushButton::clicked, this, [this] {
-        const int row = m_runsTable->currentRow();
-        if (row >= 0) m_runner->undoTo(m_runsTable->item(row, 0)->text().toInt());
+        if (const int run = selectedRunNumber(m_runsTable)) m_runner->undoTo(run);
     });
     connect(m_bodeButton, &QPushButton::clicked, this, &FamilyTuningPanel::frequencyResponse);
     connect(m_runsTable, &QTableWidget::itemSelectionChanged, this, [this] {
@@ -184,18 +146,11 @@ QWidget* FamilyTuningPanel::buildTestMove() {
     m_amplitude->setValue(m_runner->profile().moves.value(0).amplitude);
     connect(m_amplitude, &QSpinBox::valueChanged, this, &FamilyTuningPanel::applyMove);
     connect(m_hold, &QSpinBox::valueChanged, this, &FamilyTuningPanel::applyMove);
-    m_runOnce = new QPushButton(tr("Run Once"), box);
-    m_runLoop = new QPushButton(tr("Run Continuously"), box);
-    m_stop = new QPushButton(tr("Stop"), box);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_runOnce);
-    buttons->addWidget(m_runLoop);
-    buttons->addWidget(m_stop);
-    form->addRow(buttons);
-    m_status = new QLabel(box);
-    m_status->setObjectName(QStringLiteral("familyTuningStatus"));
-    m_status->setWordWrap(true);
-    form->addRow(m_status);
+    const RunButtons run = addRunButtons(box, form);
+    m_runOnce = run.once;
+    m_runLoop = run.loop;
+    m_stop = run.stop;
+    m_status = addStatusLine(box, form, QStringLiteral("familyTuningStatus"));
     connect(m_runOnce, &QPushButton::clicked, m_runner, &FamilyTuningRunner::runOnce);
     connect(m_runLoop, &QPushButton::clicked, m_runner, &FamilyTuningRunner::runContinuously);
     connect(m_stop, &QPushButton::clicked, m_runner, &FamilyTuningRunner::stop);
@@ -239,26 +194,17 @@ QString FamilyTuningPanel::gainMark(const QString& name) const {
 
 void FamilyTuningPanel::addRun(const FamilyTuningRun& run) {
     m_view->showCapture(run.capture, true);
-    const int row = m_runsTable->rowCount();
-    m_runsTable->insertRow(row);
     const QString changed = QString::fromStdString(run.capture.title).section(QStringLiteral(": "), 1);
-    const QStringList cells = {QString::number(run.number),
-                               changed.isEmpty() ? (run.number == 1 ? tr("(first)") : tr("(none)")) : changed,
-                               run.metrics.hasStep ? QString::number(run.metrics.overshoot_pct, 'f', 1)
-                                                   : QStringLiteral("\u2014"),
-                               ms(run.metrics.rise_s),
-                               ms(run.metrics.settling_s),
-                               run.fault.isEmpty() ? run.source : tr("FAULT %1; %2").arg(run.fault, run.source)};
-    for (int c = 0; c < int(cells.size()); ++c) {
-        auto* item = new QTableWidgetItem(cells[c]);
-        item->setTextAlignment(c == 1 || c == 5 ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
-        if (!run.fault.isEmpty()) {
-            item->setForeground(QColor(0xb0, 0x00, 0x20));
-            item->setToolTip(tr("The drive faulted during this run: %1").arg(run.fault));
-        }
-        m_runsTable->setItem(row, c, item);
-    }
-    m_runsTable->scrollToBottom();
+    RunRow row;
+    row.cells = {QString::number(run.number),
+                 changed.isEmpty() ? (run.number == 1 ? tr("(first)") : tr("(none)")) : changed,
+                 run.metrics.hasStep ? QString::number(run.metrics.overshoot_pct, 'f', 1) : QStringLiteral("\u2014"),
+                 milliseconds(run.metrics.rise_s),
+                 milliseconds(run.metrics.settling_s),
+                 run.fault.isEmpty() ? run.source : tr("FAULT %1; %2").arg(run.fault, run.source)};
+    row.leftAligned = {1, 5};
+    if (!run.fault.isEmpty()) row.fault = tr("The drive faulted during this run: %1").arg(run.fault);
+    appendRun(m_runsTable, row);
     if (m_bode && m_bode->isVisible() && m_runsTable->currentRow() < 0) showBode(); // follows the newest run
     if (!run.fault.isEmpty())
         return setStatus(tr("Run %1: the drive faulted — %2. The response is shown up to the fault; the next run "
@@ -270,7 +216,7 @@ void FamilyTuningPanel::addRun(const FamilyTuningRun& run) {
     setStatus(tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
                   .arg(run.number)
                   .arg(run.metrics.overshoot_pct, 0, 'f', 1)
-                  .arg(ms(run.metrics.rise_s), ms(run.metrics.settling_s)));
+                  .arg(milliseconds(run.metrics.rise_s), milliseconds(run.metrics.settling_s)));
 }
 
 BodeView* FamilyTuningPanel::frequencyResponse() {
@@ -286,8 +232,8 @@ void FamilyTuningPanel::showBode() {
     if (runs.isEmpty())
         return m_bode->showNothing(tr("No run yet: Run Once, then the frequency response of its %1 \u2192 %2.")
                                        .arg(m_runner->profile().command, m_runner->profile().monitor));
-    const int row = m_runsTable->currentRow();
-    const int number = row >= 0 ? m_runsTable->item(row, 0)->text().toInt() : runs.back().number;
+    const int selected = selectedRunNumber(m_runsTable);
+    const int number = selected > 0 ? selected : runs.back().number;
     for (const FamilyTuningRun& run : runs)
         if (run.number == number)
             m_bode->showCapture(run.capture, m_runner->profile().command, m_runner->profile().monitor);
