@@ -4,6 +4,7 @@
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "main_window.h"
+#include "terminal_dock.h"
 
 #include "editor/outline_dock.h"
 #include "editor/program_editor.h"
@@ -137,6 +138,9 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      }});
     steps.push_back({.name = QStringLiteral("motion-dialogue"),
                      .act = [&window] {
+                         // The program over an output window a third of the height, as a user opens it: the
+                         // scope steps before left the bottom docks tall.
+                         window.resizeDocks({window.terminalDock()}, {window.height() / 3}, Qt::Vertical);
                          Sc750VariablesDock* vars = sc750(window)->variablesDock();
                          vars->show();
                          for (const char* name : {"COUNT", "DISTANCE", "PAUSE.TIME", "RUN.SPEED", "POS.COMMAND"})
