@@ -55,6 +55,13 @@ void Bds5Verify::answered(const Bds5Response& response) {
     else
         checksumText += QLatin1Char('.');
     m_result.summary += checksumText;
+    if (!ok && m_result.status == Bds5TransferResult::Status::Ok) {
+        // A damaged P CHECKSUM can reach the drive as another command, one that edits the program after it was
+        // read back (seen in serialport.download_campaign at 1 % damage): unconfirmed is not verified, and the
+        // download reads back once more.
+        m_result.status = Bds5TransferResult::Status::Failed;
+        m_result.summary += tr(" The program could not be confirmed.");
+    }
     finish(m_result);
 }
 
