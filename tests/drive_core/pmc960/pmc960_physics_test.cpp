@@ -285,27 +285,31 @@ TEST(Pmc960Physics, TheManualsTuningCriteriaAreReachable) {
     EXPECT_LT(overshoot(position, 0, 100), 0.05);
 }
 
+// Changes of SF! over one second at rest after an index (what SF% shows, 4.8.6), with ALGAIN `lockGain`,
+// PLCOMP `positionComp` and `load_Nm` on the bench (the motor's continuous torque is 3 N m).
+int changesOfSf(int lockGain, int positionComp, double load_Nm) {
+    TestDrive t;
+    prepare(t);
+    if (positionComp != 0) setTable(t, "TGE", positionComp, true);
+    setTable(t, "TGL", lockGain);
+    t.drive.controls()->setLoadTorque_Nm(load_Nm);
+    t.type("I100+", 500ms);
+    int changes = 0;
+    double last = t.drive.state().motion.followingError_counts();
+    for (int ms = 0; ms < 1000; ++ms) {
+        t.drive.step(Microseconds{1000});
+        const double now = t.drive.state().motion.followingError_counts();
+        changes += now != last;
+        last = now;
+    }
+    return changes;
+}
+
 // 4.8.6: ALGAIN adds the resolver's inter-LSB signal to the position error. In range it holds still; set far
 // too high it over-corrects every count and the position dithers again (SF% shows it).
 TEST(Pmc960Physics, TooMuchAnalogLockGainDithers) {
-    auto changesOfSf = [](int lockGain) {
-        TestDrive t;
-        prepare(t);
-        setTable(t, "TGE", 0xFF, true);
-        setTable(t, "TGL", lockGain);
-        t.type("I100+", 500ms);
-        int changes = 0;
-        double last = t.drive.state().motion.followingError_counts();
-        for (int ms = 0; ms < 1000; ++ms) {
-            t.drive.step(Microseconds{1000});
-            const double now = t.drive.state().motion.followingError_counts();
-            changes += now != last;
-            last = now;
-        }
-        return changes;
-    };
-    EXPECT_EQ(changesOfSf(8), 0);
-    EXPECT_GT(changesOfSf(255), 50); // in one second
+    EXPECT_EQ(changesOfSf(8, 0xFF, 0), 0);
+    EXPECT_GT(changesOfSf(255, 0xFF, 0), 50); // in one second
 }
 
 // 4.8.6: "If position system dither on the least significant bit of the position feedback is a problem ...
@@ -314,28 +318,10 @@ TEST(Pmc960Physics, TooMuchAnalogLockGainDithers) {
 // between 0 and 1 count and the loop kicks the shaft back and forth across the edge; the inter-LSB signal
 // turns the edge into a slope the loop can hold.
 TEST(Pmc960Physics, ALoadMakesTheLeastBitDitherUntilTheAnalogLockHoldsIt) {
-    // Changes of SF! over one second at rest after an index, with `load_Nm` on the bench (the motor's
-    // continuous torque is 3 N m).
-    auto changesOfSf = [](int lockGain, double load_Nm) {
-        TestDrive t;
-        prepare(t);
-        setTable(t, "TGL", lockGain);
-        t.drive.controls()->setLoadTorque_Nm(load_Nm);
-        t.type("I100+", 500ms);
-        int changes = 0;
-        double last = t.drive.state().motion.followingError_counts();
-        for (int ms = 0; ms < 1000; ++ms) {
-            t.drive.step(Microseconds{1000});
-            const double now = t.drive.state().motion.followingError_counts();
-            changes += now != last;
-            last = now;
-        }
-        return changes;
-    };
-    EXPECT_EQ(changesOfSf(0, 0), 0); // nothing pushes the shaft onto an edge
+    EXPECT_EQ(changesOfSf(0, 0, 0), 0); // nothing pushes the shaft onto an edge
     for (double load : {0.2, 1.0}) {
-        EXPECT_GT(changesOfSf(0, load), 50) << load << " N m, TGL0: the least bit dithers";
-        EXPECT_EQ(changesOfSf(8, load), 0) << load << " N m, TGL8: the analog lock holds";
+        EXPECT_GT(changesOfSf(0, 0, load), 50) << load << " N m, TGL0: the least bit dithers";
+        EXPECT_EQ(changesOfSf(8, 0, load), 0) << load << " N m, TGL8: the analog lock holds";
     }
 }
 
