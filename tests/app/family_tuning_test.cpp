@@ -55,6 +55,15 @@ QPushButton* button(QWidget* panel, const QString& text) {
     return nullptr;
 }
 
+// Shows a window connected to the family's simulated drive; its workspace, or nullptr when it did not connect.
+app::FamilyWorkspace* connectSimulated(MainWindow& window, DriveFamily family) {
+    window.resize(1280, 800);
+    window.show();
+    window.connectDrive(app::ConnectionChoice::simulator(family));
+    app::FamilyWorkspace* ws = window.workspace(family);
+    return ws && QTest::qWaitFor([ws] { return ws->isConnected(); }, kTimeoutMs) ? ws : nullptr;
+}
+
 // Opens the family's Tuning Panel from its menu and waits until the gains are read.
 FamilyTuningPanel* openPanel(MainWindow& window, app::FamilyWorkspace& ws, const QString& gain) {
     QDockWidget* dock = tuningDock(ws);
@@ -137,11 +146,9 @@ private slots:
     // halves the rise; undo to run 1 puts KVP back on the drive, as Read from Drive then shows.
     void sc750VelocityStepOnDacmonAndKvp() {
         MainWindow window;
-        window.resize(1280, 800);
-        window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *window.workspace(DriveFamily::Sc750);
-        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Sc750);
+        QVERIFY(connected);
+        auto& ws = *connected;
         FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("KVP"));
         QVERIFY(panel);
         const QImage empty = plotImage(panel->view());
@@ -202,11 +209,9 @@ private slots:
     // shorter, and TG? reads the new value back.
     void pmc960TachRiseFollowsVlgain() {
         MainWindow window;
-        window.resize(1280, 800);
-        window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
-        auto& ws = *window.workspace(DriveFamily::Pmc960);
-        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Pmc960);
+        QVERIFY(connected);
+        auto& ws = *connected;
         FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
         QVERIFY(panel);
         const QImage empty = plotImage(panel->view());
@@ -258,11 +263,9 @@ private slots:
     // next run clears it (ENABLE=0, then the runs' ENABLE=1) and measures again.
     void sc750FaultDuringARunIsShownAndCleared() {
         MainWindow window;
-        window.resize(1280, 800);
-        window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *window.workspace(DriveFamily::Sc750);
-        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Sc750);
+        QVERIFY(connected);
+        auto& ws = *connected;
         FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("KPP"));
         QVERIFY(panel);
         const double kpp = panel->gainEditor(QStringLiteral("KPP"))->value();
@@ -303,11 +306,9 @@ private slots:
     // run shows E1, and the next run (after SF back at its power-up 2048) clears it with SM0 and measures.
     void pmc960FollowingErrorTripIsShownAndCleared() {
         MainWindow window;
-        window.resize(1280, 800);
-        window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
-        auto& ws = *window.workspace(DriveFamily::Pmc960);
-        QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
+        app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Pmc960);
+        QVERIFY(connected);
+        auto& ws = *connected;
         FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("FFGAIN"));
         QVERIFY(panel);
         panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(0);
