@@ -1,7 +1,8 @@
 // The motor and its load as an Eigen state-space model: motor and load angle and speed, coupled by a
 // spring and damper (two masses, so a compliant coupling shows its resonance) or rigidly (one mass), with
 // viscous and Coulomb friction and an external load torque; driven by the current from a first-order
-// (analog) current loop. Stepped in fixed time by RK4 sub-steps; never reads a clock.
+// (analog) current loop. Stepped in fixed time by sub-steps (exact where the motion is linear, else RK4);
+// never reads a clock.
 #pragma once
 
 #include "motor_parameters.h"
@@ -35,13 +36,25 @@ public:
 private:
     using State = Eigen::Vector4d;
     State derivative(const State& x, double current_A) const;
+    void plan(double dt_s);
+    void stepRk4(double h, double current_A);
+    bool stepRigidExactly(double current_A);
     bool rigid() const { return m_load.couplingStiffness_NmPerRad <= 0; }
 
     MotorParameters m_motor;
     LoadParameters m_load;
     State m_x = State::Zero();
     double m_current_A = 0;
-    double m_decayStep_s = 0, m_decayTau_s = 0, m_decay = 0; // the current loop's decay over a sub-step
+    // What a step of m_planFor_s takes, worked out once (a servo period is the same every time; a new load
+    // asks again): its sub-steps, the current loop's decay and mean over one, and for a rigid shaft the
+    // exact solution's coefficients (see stepRigidExactly).
+    struct Plan {
+        double dt_s = -1;
+        int steps = 1;
+        double h = 0, decay = 0, meanFactor = 0;
+        double e = 0, phi1 = 0, phi2 = 0;                 // exp(-beta h), (1 - e) / beta, (h - phi1) / beta
+        double torquePerA = 0, load = 0, friction = 0;    // Kt / J, load torque / J, Coulomb friction / J
+    } m_plan;
 };
 
 } // namespace drive_core::physics

@@ -30,9 +30,7 @@ Matrix6 exponential(const Matrix6& m) {
 // States x = (i, z), z = integral of (u - i): the PI drives the winding with v = Kp (u - i + z / Ti), Kp = L wn,
 // so L di/dt = -R i + v gives di/dt = -(1/tau + wn) i + (wn / Ti) z + wn u, dz/dt = u - i. With Ti = tau the
 // closed loop is exactly wn / (s + wn). Back-EMF is left to the integrator (it changes slowly).
-void Sc750CurrentLoop::configure(double windingTau_s, double bandwidth_Hz, int ilc, double period_s) {
-    ilc = std::max(ilc, 1);
-    if (windingTau_s == m_tau_s && bandwidth_Hz == m_bandwidth_Hz && ilc == m_ilc && period_s == m_period_s) return;
+void Sc750CurrentLoop::design(double windingTau_s, double bandwidth_Hz, int ilc, double period_s) {
     m_tau_s = windingTau_s;
     m_bandwidth_Hz = bandwidth_Hz;
     m_ilc = ilc;

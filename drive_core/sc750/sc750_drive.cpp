@@ -41,6 +41,7 @@ void Sc750Drive::powerUp() {
     if (keep)
         for (std::size_t i = 0; i < vars.size(); ++i)
             if (vars[i].access == cat::Access::Parameter) m_values[i] = nv[i];
+    ++m_valuesVersion;
     m_inputs.fill(true); // unconnected inputs pull high (L2097)
     m_motion = Sc750Motion{};
     m_axis = m_axisSwitch;
@@ -58,6 +59,7 @@ void Sc750Drive::powerUp() {
     m_ratioFromPulses = false;
     m_lastInput7 = m_lastInput8 = true;
     m_timers = {};
+    m_anyTimer = false;
     m_wasEnabled = false;
     m_charReceived = m_disableEvent = false;
     m_monitor.reset();
@@ -78,7 +80,7 @@ bool Sc750Drive::loadProgram(std::vector<std::uint8_t> bin, std::string* error) 
     m_bin = std::move(bin);
     for (const ProgramParam& p : read.program->params) { // PARAMS become the NV power-on values (L1176)
         const auto& info = cat::variables()[std::size_t(p.variable)];
-        if (auto v = convert(Value(float(p.value)), info.type)) m_values[std::size_t(p.variable)] = *v;
+        if (auto v = convert(Value(float(p.value)), info.type)) set(p.variable, *v);
     }
     m_vm.load(std::move(*read.program));
     m_runFault = 0;
@@ -134,7 +136,7 @@ void Sc750Drive::tick() {
     analogTick();
     registration();
     m_encoderPosition += m_masterFrequency * kTick_s;
-    for (int t = 0; t < 6; ++t) {
+    for (int t = 0; t < 6 && m_anyTimer; ++t) {
         Timer& timer = m_timers[std::size_t(t)];
         if (!timer.configured || num(ix().tmenable1 + t) != 1) continue;
         const bool trigger = input(timer.input) == (timer.inputLevel == 1);

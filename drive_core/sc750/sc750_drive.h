@@ -112,7 +112,10 @@ private:
     bool enabled() const;
     bool homeClosed() const;
     double num(int index) const { return toDouble(m_values[std::size_t(index)]); }
-    void set(int index, Value value) { m_values[std::size_t(index)] = std::move(value); }
+    void set(int index, Value value) {
+        m_values[std::size_t(index)] = std::move(value);
+        ++m_valuesVersion;
+    }
     MoveSettings settings() const;
     GearSettings gearSettings() const;
     void registration();
@@ -123,10 +126,22 @@ private:
     // The servo's own faults after a tick (overspeed, I.t, following error; DECISIONS 56): the first latches
     // and disables until ENABLE or the enable input goes low.
     void servoFaults();
-    ServoSettings servoSettings() const;
+    // The loop settings as the variables hold them, worked out again only after a write (every tick reads
+    // them: the simulator's speed, issue 18).
+    const ServoSettings& servoSettings() const;
     // sc750_drive_io.cpp: analog input/output, encoder output.
     void analogTick();
-    double dacSignal_V();
+    // What the analog side reads from the variables every tick, worked out again only after a write.
+    struct AnalogSettings {
+        std::uint64_t version = ~std::uint64_t(0); // m_valuesVersion it is for
+        double adoffset_V = 0, adf0_Hz = 0, dmf0_Hz = 0, encoderLines = 0;
+        int dacmap = 0;
+        double analogOut_V = 0;   // DACMAP 0: ANALOG.OUT, clamped
+        double voltsPerValue = 0; // DACMAP 1-13: volts per unit of the signal as dacSignal_V reads it
+        bool rollsOver = false;   // a position signal: rolls over at ±5 V instead of clamping
+    };
+    const AnalogSettings& analogSettings();
+    double dacSignal_V(const AnalogSettings& settings);
     double lag_counts() const { return m_motion.shaft_counts() - m_actual_counts; } // POS.ERROR, not rounded
 
     struct Timer {
@@ -144,10 +159,15 @@ private:
     Sc750Servo m_servo;
     bds5::Bds5Uart m_uart;
     std::vector<Value> m_values; // predefined variables by catalog index
+    std::uint64_t m_valuesVersion = 0; // counts the writes to m_values (and motor changes), for the caches
+    mutable std::uint64_t m_servoSettingsVersion = ~std::uint64_t(0), m_gearSettingsVersion = ~std::uint64_t(0);
+    mutable ServoSettings m_servoSettings;
+    mutable GearSettings m_gearSettings;
     std::vector<std::uint8_t> m_bin;
     std::vector<std::uint8_t> m_source;
     std::array<bool, 16> m_inputs{};
     std::array<Timer, 6> m_timers{};
+    bool m_anyTimer = false; // a TMRSET has configured one since power-up (the tick skips them until then)
     std::string m_programInput;
     Microseconds m_now{0};
     Microseconds m_carry{0};
@@ -177,6 +197,7 @@ private:
         double operator()(double filtered, double input, double corner);
     };
     LowPass m_adf0, m_dmf0;          // ADF0 on the analog input, DMF0 on the analog output
+    AnalogSettings m_analogSettings;
     MonitorRecorder m_dacmonScope{kTick_s}; // the bench's oscilloscope on DACMON (kept over a power cycle)
     double m_encoderOut_counts = 0;  // emitted by the encoder output (ENC.OUT > 0), quadrature counts
     double m_lastShaft_counts = 0;

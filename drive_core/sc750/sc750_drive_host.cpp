@@ -105,17 +105,51 @@ const DriveIndex& driveIndex() {
         i.velerr = at("VEL.ERR");
         i.icmd = at("ICMD");
         i.ifb = at("IFB");
+        i.reading.assign(cat::variables().size(), Reading::Stored);
+        auto reads = [&i](int k, Reading r) { i.reading[std::size_t(k)] = r; };
+        reads(i.poscmd, Reading::PosCmd);
+        reads(i.position, Reading::Position);
+        reads(i.poserror, Reading::PosError);
+        reads(i.respos, Reading::ResPos);
+        reads(i.velocity, Reading::Velocity);
+        reads(i.rvel, Reading::Rvel);
+        reads(i.velcmd, Reading::VelCmd);
+        reads(i.velerr, Reading::VelErr);
+        reads(i.icmd, Reading::Icmd);
+        reads(i.ifb, Reading::Ifb);
+        reads(i.moving, Reading::Moving);
+        reads(i.inposition, Reading::InPosition);
+        reads(i.analogin, Reading::AnalogIn);
+        reads(i.dacmon, Reading::Dacmon);
+        reads(i.enabled, Reading::Enabled);
+        reads(i.faultcode, Reading::FaultCode);
+        reads(i.time, Reading::Time);
+        reads(i.axisaddr, Reading::AxisAddr);
+        reads(i.loggedon, Reading::LoggedOn);
+        reads(i.inputs, Reading::Inputs);
+        for (int n = 0; n < 16; ++n) reads(i.inp1 + n, Reading::Input);
+        for (int n = 0; n < 12; ++n) reads(i.out1 + n, Reading::Output);
+        reads(i.encpos, Reading::EncPos);
+        reads(i.gearlock, Reading::GearLock);
+        reads(i.gearerror, Reading::GearError);
+        reads(i.encfreq, Reading::EncFreq);
         return i;
     }();
     return index;
 }
 
 GearSettings Sc750Drive::gearSettings() const {
-    const DriveIndex& x = ix();
-    // the last of RATIO and PULSES.IN/PULSES.OUT written defines the ratio (L1622-L1624)
-    const double ratio =
-        m_ratioFromPulses ? num(x.pulsesout) / num(x.pulsesin) : num(x.ratio) * kCountsPerRev / (4 * num(x.encin));
-    return GearSettings{int(num(x.gearing)), m_masterFrequency, ratio, num(x.accelgear), num(x.decelgear)};
+    if (m_gearSettingsVersion != m_valuesVersion) { // m_ratioFromPulses changes with a write too
+        m_gearSettingsVersion = m_valuesVersion;
+        const DriveIndex& x = ix();
+        // the last of RATIO and PULSES.IN/PULSES.OUT written defines the ratio (L1622-L1624)
+        const double ratio = m_ratioFromPulses ? num(x.pulsesout) / num(x.pulsesin)
+                                               : num(x.ratio) * kCountsPerRev / (4 * num(x.encin));
+        m_gearSettings = GearSettings{int(num(x.gearing)), 0, ratio, num(x.accelgear), num(x.decelgear)};
+    }
+    GearSettings g = m_gearSettings;
+    g.master_cps = m_masterFrequency;
+    return g;
 }
 
 MoveSettings Sc750Drive::settings() const {
@@ -130,43 +164,46 @@ double Sc750Drive::pauseTime_s() {
 Value Sc750Drive::readVariable(int i) {
     const DriveIndex& x = ix();
     auto integer = [](double v) { return Value(std::int32_t(std::llround(v))); };
-    const double pcmd = m_motion.positionCommand_counts();
+    auto flag = [](bool on) { return Value(std::int32_t(on ? 1 : 0)); };
     // POSITION is the plant's shaft in POS.COMMAND's coordinates, to the nearest count (DECISIONS 50)
-    if (i == x.poscmd) return integer(pcmd);
-    if (i == x.position) return integer(pcmd - lag_counts());
-    if (i == x.poserror) return Value(std::int32_t(std::llround(pcmd) - std::llround(pcmd - lag_counts())));
-    if (i == x.respos) {
+    const auto pcmd = [this] { return m_motion.positionCommand_counts(); };
+    switch (x.reading[std::size_t(i)]) {
+    case Reading::Stored: break;
+    case Reading::PosCmd: return integer(pcmd());
+    case Reading::Position: return integer(pcmd() - lag_counts());
+    case Reading::PosError: return Value(std::int32_t(std::llround(pcmd()) - std::llround(pcmd() - lag_counts())));
+    case Reading::ResPos: {
         const auto counts = std::llround(m_actual_counts);
         return Value(std::int32_t(((counts % 4096) + 4096) % 4096));
     }
-    if (i == x.velocity) return Value(float(m_servo.averageVelocity_cps() / kCpsPerRpm));
-    if (i == x.rvel) return Value(float(m_servo.velocity_cps() / kCpsPerRpm));
-    if (i == x.velcmd) return Value(float(m_servo.velocityCommand_cps() / kCpsPerRpm));
-    if (i == x.velerr) return Value(float(m_servo.velocityError_cps() / kCpsPerRpm));
-    if (i == x.icmd) return Value(float(m_servo.currentCommand_A()));
-    if (i == x.ifb) return Value(float(m_servo.current_A()));
-    if (i == x.moving) return Value(std::int32_t(m_motion.moving() ? 1 : 0));
-    if (i == x.inposition)
-        return Value(
-            std::int32_t(!m_motion.moving() && std::abs(toDouble(readVariable(x.poserror))) <= num(x.inposlimit)));
-    if (i == x.analogin) return Value(float(m_analogInFiltered_V));
-    if (i == x.dacmon) return Value(float(m_dacmon_V));
-    if (i == x.enabled) return Value(std::int32_t(enabled() ? 1 : 0));
-    if (i == x.faultcode) return Value(std::int32_t(faultCode()));
-    if (i == x.time) return Value(float(double(m_ticks - m_timeBase) * kTick_s + m_timeOffset_s));
-    if (i == x.axisaddr) return Value(std::int32_t(m_axis));
-    if (i == x.loggedon) return Value(std::int32_t(m_loggedOn ? 1 : 0));
-    if (i == x.inputs) {
+    case Reading::Velocity: return Value(float(m_servo.averageVelocity_cps() / kCpsPerRpm));
+    case Reading::Rvel: return Value(float(m_servo.velocity_cps() / kCpsPerRpm));
+    case Reading::VelCmd: return Value(float(m_servo.velocityCommand_cps() / kCpsPerRpm));
+    case Reading::VelErr: return Value(float(m_servo.velocityError_cps() / kCpsPerRpm));
+    case Reading::Icmd: return Value(float(m_servo.currentCommand_A()));
+    case Reading::Ifb: return Value(float(m_servo.current_A()));
+    case Reading::Moving: return flag(m_motion.moving());
+    case Reading::InPosition:
+        return flag(!m_motion.moving() && std::abs(toDouble(readVariable(x.poserror))) <= num(x.inposlimit));
+    case Reading::AnalogIn: return Value(float(m_analogInFiltered_V));
+    case Reading::Dacmon: return Value(float(m_dacmon_V));
+    case Reading::Enabled: return flag(enabled());
+    case Reading::FaultCode: return Value(std::int32_t(faultCode()));
+    case Reading::Time: return Value(float(double(m_ticks - m_timeBase) * kTick_s + m_timeOffset_s));
+    case Reading::AxisAddr: return Value(std::int32_t(m_axis));
+    case Reading::LoggedOn: return flag(m_loggedOn);
+    case Reading::Inputs: {
         std::int32_t bits = 0;
         for (int n = 1; n <= 16; ++n) bits |= (input(n) ? 1 : 0) << (n - 1);
         return Value(bits);
     }
-    if (i >= x.inp1 && i < x.inp1 + 16) return Value(std::int32_t(input(i - x.inp1 + 1) ? 1 : 0));
-    if (i >= x.out1 && i < x.out1 + 12) return Value(std::int32_t(output(i - x.out1 + 1) ? 0 : 1));
-    if (i == x.encpos) return integer(m_encoderPosition);
-    if (i == x.gearlock) return Value(std::int32_t(m_motion.gearLocked() ? 1 : 0));
-    if (i == x.gearerror) return integer(m_motion.gearError_counts());
-    if (i == x.encfreq) return Value(float(m_masterFrequency));
+    case Reading::Input: return flag(input(i - x.inp1 + 1));
+    case Reading::Output: return flag(!output(i - x.out1 + 1));
+    case Reading::EncPos: return integer(m_encoderPosition);
+    case Reading::GearLock: return flag(m_motion.gearLocked());
+    case Reading::GearError: return integer(m_motion.gearError_counts());
+    case Reading::EncFreq: return Value(float(m_masterFrequency));
+    }
     return m_values[std::size_t(i)];
 }
 
@@ -242,7 +279,8 @@ void Sc750Drive::registration() {
     const int mode = int(num(x.regmode));
     const bool resolver = mode >= 1 && rise7;
     const bool encoder = (mode == 2 && rise7) || (mode == 3 && rise8);
-    int flag = int(num(x.regflag));
+    const int wasFlag = int(num(x.regflag));
+    int flag = wasFlag;
     if (resolver && (flag & 2) == 0) {
         set(x.regpos, readVariable(x.position));
         set(x.regrespos, readVariable(x.respos));
@@ -254,7 +292,7 @@ void Sc750Drive::registration() {
         set(x.regencpos, readVariable(x.encpos));
         flag |= 1;
     }
-    set(x.regflag, std::int32_t(flag));
+    if (flag != wasFlag) set(x.regflag, std::int32_t(flag));
 }
 
 void Sc750Drive::motion(int kind) {
@@ -335,6 +373,7 @@ void Sc750Drive::tmrset(int timer, float delay_s, int packed) {
     t.inputLevel = packed >> 11 & 1;
     t.delay_s = delay_s;
     t.configured = t.output >= 1 && t.input >= 1;
+    m_anyTimer = m_anyTimer || t.configured;
     t.lastTrigger = false;
     t.fireAt = t.endAt = -1;
 }

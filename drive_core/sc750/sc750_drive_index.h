@@ -1,7 +1,17 @@
 // Catalog indices of the SC750 variables the simulated drive computes or reacts to, looked up once by name.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 namespace drive_core::sc750 {
+
+// What a read of a variable returns: the stored value, or one the drive computes from its state.
+enum class Reading : std::uint8_t {
+    Stored, PosCmd, Position, PosError, ResPos, Velocity, Rvel, VelCmd, VelErr, Icmd, Ifb, Moving, InPosition,
+    AnalogIn, Dacmon, Enabled, FaultCode, Time, AxisAddr, LoggedOn, Inputs, Input, Output, EncPos, GearLock,
+    GearError, EncFreq
+};
 
 struct DriveIndex {
     int enable, enabled, faultcode, poscmd, position, poserror, respos, velocity, rvel, velcmd, moving, inposition,
@@ -12,6 +22,7 @@ struct DriveIndex {
         regmode, regfunc, regdist, regflag, regpos, regrespos, regencpos, dacmon, adf0, adoffset, dmf0, encout,
         analogout, cwot, ccwot, poserrmoving, poserrstopped, kvp, kvi, kpp, kvff, arf0, arf1, ilc, ilmtplus, ilmtminus,
         cmdgain, itf0, itthresh, model, velerr, icmd, ifb;
+    std::vector<Reading> reading; // by catalog index: a read looks here first (programs poll MOVING every tick)
 };
 
 const DriveIndex& driveIndex();

@@ -13,13 +13,33 @@ namespace drive_core::sc750 {
 
 namespace cat = catalog::sc750;
 
+const Sc750Drive::AnalogSettings& Sc750Drive::analogSettings() {
+    AnalogSettings& a = m_analogSettings;
+    if (a.version == m_valuesVersion) return a;
+    a.version = m_valuesVersion;
+    const DriveIndex& x = ix();
+    a.adoffset_V = num(x.adoffset);
+    a.adf0_Hz = num(x.adf0);
+    a.dmf0_Hz = num(x.dmf0);
+    a.encoderLines = num(x.encout);
+    a.dacmap = int(num(x.dacmap));
+    a.analogOut_V = std::clamp(num(x.analogout), -5.0, 5.0);
+    if (a.dacmap > 0 && a.dacmap < int(cat::dacMap().size())) {
+        const cat::DacMapInfo& info = cat::dacMap()[std::size_t(a.dacmap)];
+        double perUnit = info.voltsPerUnit * num(x.dmgain);
+        if (info.unit == "kRPM" || info.unit == "kHz") perUnit /= 1000.0;
+        if (info.unit == "rev" || info.unit == "4096 counts") perUnit /= kCountsPerRev;
+        a.voltsPerValue = perUnit;
+    }
+    a.rollsOver = a.dacmap == 5 || a.dacmap == 6 || a.dacmap == 7 || a.dacmap == 12;
+    return a;
+}
 
 // The signal DACMAP selects, scaled to volts (L2147-L2175): DMGAIN multiplies every source but ANALOG.OUT;
 // position signals roll over at ±5 V, the others clamp there.
-double Sc750Drive::dacSignal_V() {
-    const int map = int(num(ix().dacmap));
-    if (map == 0) return std::clamp(num(ix().analogout), -5.0, 5.0);
-    const cat::DacMapInfo& info = cat::dacMap()[std::size_t(map)];
+double Sc750Drive::dacSignal_V(const AnalogSettings& a) {
+    const int map = a.dacmap;
+    if (map == 0) return a.analogOut_V;
     // The servo's signals straight from the loops (no look-up by name: this runs every tick); positions in
     // whole counts, as the variables read.
     const double pcmd = m_motion.positionCommand_counts();
@@ -40,11 +60,8 @@ double Sc750Drive::dacSignal_V() {
     case 13: value = m_servo.itFiltered_A(); break;
     default: break;
     }
-    if (info.unit == "kRPM" || info.unit == "kHz") value /= 1000.0;
-    if (info.unit == "rev" || info.unit == "4096 counts") value /= kCountsPerRev;
-    const double volts = value * info.voltsPerUnit * num(ix().dmgain);
-    const bool position = map == 5 || map == 6 || map == 7 || map == 12;
-    if (position) return volts - 10.0 * std::floor((volts + 5.0) / 10.0); // -5 ... +5, rolling over
+    const double volts = value * a.voltsPerValue;
+    if (a.rollsOver) return volts - 10.0 * std::floor((volts + 5.0) / 10.0); // -5 ... +5, rolling over
     return std::clamp(volts, -5.0, 5.0);
 }
 
@@ -57,13 +74,14 @@ double Sc750Drive::LowPass::operator()(double filtered, double input, double cor
 }
 
 void Sc750Drive::analogTick() {
-    const double sampled = std::clamp(m_analogIn_V, -12.0, 12.0) + num(ix().adoffset);
-    m_analogInFiltered_V = std::clamp(m_adf0(m_analogInFiltered_V, sampled, num(ix().adf0)), -12.0, 12.0);
-    m_dacmon_V = m_dmf0(m_dacmon_V, dacSignal_V(), num(ix().dmf0));
+    const AnalogSettings& a = analogSettings();
+    const double sampled = std::clamp(m_analogIn_V, -12.0, 12.0) + a.adoffset_V;
+    m_analogInFiltered_V = std::clamp(m_adf0(m_analogInFiltered_V, sampled, a.adf0_Hz), -12.0, 12.0);
+    m_dacmon_V = m_dmf0(m_dacmon_V, dacSignal_V(a), a.dmf0_Hz);
     // The second probe: the net velocity command at DACMAP 2's scale, 1 V/kRPM (DECISIONS 55).
     m_dacmonScope.push(m_dacmon_V, m_servo.velocityCommand_cps() / kCpsPerRpm / 1000.0,
                        std::chrono::duration<double>(m_now).count());
-    const double lines = num(ix().encout);
+    const double lines = a.encoderLines;
     if (lines > 0) m_encoderOut_counts += (m_actual_counts - m_lastShaft_counts) * 4.0 * lines / kCountsPerRev;
     m_lastShaft_counts = m_actual_counts;
 }

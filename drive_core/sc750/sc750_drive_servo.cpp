@@ -17,9 +17,12 @@ constexpr double kOverspeed_rpm = 12000;          // the resolver speed the R/D 
 constexpr double kFollowingErrorOverflow_counts = 32767; // a 16-bit error register (DECISIONS 56)
 } // namespace
 
-ServoSettings Sc750Drive::servoSettings() const {
+const ServoSettings& Sc750Drive::servoSettings() const {
+    if (m_servoSettingsVersion == m_valuesVersion) return m_servoSettings;
+    m_servoSettingsVersion = m_valuesVersion;
     const DriveIndex& x = ix();
-    ServoSettings s;
+    ServoSettings& s = m_servoSettings;
+    s = ServoSettings{};
     s.blocktype = int(num(x.blktype));
     s.kvp_APerRadPerS = num(x.kvp);
     s.kvi_Hz = num(x.kvi);
@@ -40,7 +43,7 @@ ServoSettings Sc750Drive::servoSettings() const {
 // BLKTYPE 2 closes the position loop on the profile generator's command; 3 on the analog input's position;
 // 1 and 0 have no position loop, so the command follows the shaft (POS.ERROR 0), as it does while disabled.
 void Sc750Drive::servoTick(bool en) {
-    const ServoSettings s = servoSettings();
+    const ServoSettings& s = servoSettings();
     if (en && s.blocktype == 3) {
         const double offset = m_motion.positionCommand_counts() - m_motion.shaft_counts();
         m_motion.setShaftCommand(kAnalogPosition_RevPerV * kCountsPerRev * s.cmdgain * m_analogInFiltered_V - offset);
@@ -77,6 +80,7 @@ bool Sc750Drive::selectMotor(std::string_view name) {
     Sc750Motor motor;
     if (!findSc750Motor(name, &motor)) return false;
     m_servo.setMotor(motor);
+    ++m_valuesVersion; // the controller's peak current may come from the motor
     m_motion.setShaftCommand(0);
     m_actual_counts = m_lastShaft_counts = 0;
     return true;

@@ -113,37 +113,41 @@ void Vm::tick(std::int64_t tickCount, int budget) {
     }
     // A loop that only reads (WHILE MOVING : WEND, the manual's idiom) repeats the same pass until the tick
     // ends: nothing it reads changes within a tick (the drive's state moves between ticks) and it changes
-    // nothing. Once a whole pass has gone round unchanged, the budget's whole passes are skipped and only the
-    // remainder runs, so the program ends the tick at exactly the instruction it would have reached.
+    // nothing. The pass is anchored at the first line start or loop head the program reaches after the
+    // tick's start or its last write (there the expression stack holds nothing a pass will use: a tick may
+    // end mid-expression). Back at the anchor with the same stack and nothing written, every further pass
+    // would do the same: the budget's whole passes are skipped and only the remainder runs, so the program
+    // ends the tick at exactly the instruction it would have reached.
     const auto& code = m_program->code;
-    int loopHead = -1;          // where the last backward jump went
-    int loopBudget = 0;         // the budget then
-    std::size_t loopStack = 0;  // the stack depth then
-    std::int64_t loopInterrupts = 0;
-    while (budget-- > 0 && m_state == State::Running && m_wait == Wait::None) {
+    int anchor = -1; // -1: none yet
+    int anchorBudget = 0;
+    std::size_t anchorStack = 0;
+    std::int64_t anchorInterrupts = 0;
+    bool jumpedBack = false;
+    while (budget > 0 && m_state == State::Running && m_wait == Wait::None) {
         if (m_attention && !attend()) return;
         if (m_pc < 0 || std::size_t(m_pc) >= code.size()) {
             m_state = State::Ended;
             return;
         }
+        if (jumpedBack || m_statementStart[std::size_t(m_pc)]) {
+            if (m_pc == anchor && m_stack.size() == anchorStack && m_interruptsEntered == anchorInterrupts) {
+                budget %= anchorBudget - budget; // a pass took that many: whole passes change nothing
+                anchor = -2;                     // none again this tick: the remainder is shorter than a pass
+                if (budget == 0) break;
+            } else if (anchor == -1) {
+                anchor = m_pc;
+                anchorBudget = budget;
+                anchorStack = m_stack.size();
+                anchorInterrupts = m_interruptsEntered;
+            }
+        }
+        --budget;
         const int at = m_pc++;
         const Instruction& ins = code[std::size_t(at)];
         execute(ins);
-        if (!readsOnly(ins.op)) {
-            loopHead = -1;
-            continue;
-        }
-        if ((ins.op != Op::Jump && ins.op != Op::JumpIfZero) || m_pc > at) continue; // not a backward jump
-        if (loopHead == m_pc && loopStack == m_stack.size() && loopInterrupts == m_interruptsEntered &&
-            m_state == State::Running) {
-            budget %= loopBudget - budget; // a pass took that many: whole passes change nothing
-            loopHead = -1;
-            continue;
-        }
-        loopHead = m_pc;
-        loopBudget = budget;
-        loopStack = m_stack.size();
-        loopInterrupts = m_interruptsEntered;
+        jumpedBack = (ins.op == Op::Jump || ins.op == Op::JumpIfZero) && m_pc <= at;
+        if (!readsOnly(ins.op)) anchor = -1;
     }
 }
 
@@ -248,6 +252,12 @@ std::string Vm::popString() {
 }
 
 std::int32_t Vm::popInt() {
+    if (!m_stack.empty()) // the common case, without moving the value out (a condition, an index)
+        if (const auto* i = std::get_if<std::int32_t>(&m_stack.back())) {
+            const std::int32_t v = *i;
+            m_stack.pop_back();
+            return v;
+        }
     const Value v = pop();
     if (const auto* i = std::get_if<std::int32_t>(&v)) return *i;
     return toInteger(toDouble(v)).value_or(0);
