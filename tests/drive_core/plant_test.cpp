@@ -1,5 +1,6 @@
-// The motor/load plant: Newton's law with exact answers, the current loop's time constant, Coulomb
-// friction holding against a small torque, and a compliant coupling ringing at its resonance.
+// The motor/load plant: Newton's law with exact answers, the current loop's time constant, a shaft coasting
+// down against viscous and Coulomb friction, Coulomb friction holding against a small torque, and a
+// compliant coupling ringing at its resonance.
 #include "drive_core/physics/plant.h"
 
 #include <gtest/gtest.h>
@@ -36,6 +37,28 @@ TEST(Plant, CurrentLoopIsFirstOrderAtItsBandwidth) {
     EXPECT_NEAR(plant.current_A(), 10.0 * (1 - std::exp(-1.0)), 0.01);
     plant.step(0.01, 100.0);
     EXPECT_DOUBLE_EQ(plant.current_A(), plant.motor().peakCurrent_A) << "the command is clamped to the peak";
+}
+
+// J w' = -b w - F while turning: w(t) = (w0 + F/b) e^(-bt/J) - F/b, until it stops.
+TEST(Plant, ASpinningShaftCoastsDownAsItsFrictionSays) {
+    for (const double b : {2e-5, 5e-3}) { // viscous friction (N m s/rad): a slow and a fast decay
+        MotorParameters m = frictionless();
+        m.viscousFriction_NmPerRadPerS = b;
+        m.coulombFriction_Nm = 0.02;
+        const LoadParameters load;
+        Plant plant(m, load);
+        const double j = m.rotorInertia_kgm2 + load.inertia_kgm2;
+        for (int i = 0; i < 10; ++i) plant.step(0.001, 100 * j / 0.01 / m.torqueConstant_NmPerA); // ~100 rad/s
+        plant.step(0.001, 0.0); // the current gone
+        const double w0 = plant.motorSpeed_radPerS(), angle0 = plant.motorAngle_rad();
+        ASSERT_GT(w0, 80);
+        const double t = 0.1, beta = b / j, stall = m.coulombFriction_Nm / b;
+        for (int i = 0; i < 100; ++i) plant.step(0.001, 0.0);
+        const double e = std::exp(-beta * t);
+        const double turned = (w0 + stall) * (1 - e) / beta - stall * t;
+        EXPECT_NEAR(plant.motorSpeed_radPerS(), (w0 + stall) * e - stall, 1e-9 * w0) << "b " << b;
+        EXPECT_NEAR(plant.motorAngle_rad() - angle0, turned, 1e-9 * turned) << "b " << b;
+    }
 }
 
 TEST(Plant, CoulombFrictionHoldsAgainstASmallTorque) {
