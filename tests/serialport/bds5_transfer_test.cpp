@@ -1,6 +1,7 @@
 // Program and variable transfers over SimulatorLink, asserting what a user would see: the program runs and
 // prints, uploads match, a changed drive fails verification, errors land on the right editor line, .VAR
-// files survive a round trip, and refusals (ERR 51, 86, 110) and cancels say what the drive holds.
+// files survive a round trip, refusals (ERR 51, 86, 110) and cancels say what the drive holds, and a
+// checksum lost on the line is never taken for a verified program.
 #include "serialport/bds5_download.h"
 #include "serialport/bds5_session.h"
 #include "serialport/bds5_upload.h"
@@ -20,12 +21,43 @@ using Status = Bds5TransferResult::Status;
 namespace {
 const QString kHelloWorld = QStringLiteral("10$\nP \"HELLO WORLD\"\nB\n"); // L3427-3462
 
+// Line noise on one request: the next `damaged` "P CHECKSUM" lines the IDE sends reach the drive as
+// "P CHECKSUX" (one bit flipped in the M), which the drive refuses. Otherwise it passes the bytes as they are.
+class ChecksumNoise final : public Link {
+public:
+    explicit ChecksumNoise(Link& inner) : m_inner(inner) {
+        connect(&inner, &Link::bytesReceived, this, &Link::bytesReceived);
+        connect(&inner, &Link::opened, this, &Link::opened);
+        connect(&inner, &Link::closed, this, &Link::closed);
+        connect(&inner, &Link::errorOccurred, this, &Link::errorOccurred);
+    }
+    void open() override { m_inner.open(); }
+    void close() override { m_inner.close(); }
+    bool isOpen() const override { return m_inner.isOpen(); }
+    void write(const QByteArray& bytes) override {
+        QByteArray b = bytes;
+        if (damaged > 0 && b.contains("P CHECKSUM")) {
+            b.replace("P CHECKSUM", "P CHECKSUX");
+            --damaged;
+        }
+        m_inner.write(b);
+    }
+    QString description() const override { return m_inner.description(); }
+    int baudRate() const override { return m_inner.baudRate(); }
+    std::optional<double> driveClockMs() const override { return m_inner.driveClockMs(); }
+    int damaged = 0;
+
+private:
+    Link& m_inner;
+};
+
 struct Fixture {
     SimulatorLink link;
-    Bds5Session session{link};
+    ChecksumNoise noise{link};
+    Bds5Session session{noise};
     explicit Fixture(bool paced = false)
         : link(drive_core::DriveFamily::Bds5, SimulatorLink::Options{1.0, 9600, paced}) {
-        link.open();
+        noise.open();
         QTRY_COMPARE_WITH_TIMEOUT(session.state(), Bds5Session::State::Ready, 30000);
     }
     Bds5Response run(const QString& line) {
@@ -71,6 +103,33 @@ private slots:
         QCOMPARE(f.session.mode(), Bds5Mode::Interactive);
         const Bds5Response run = f.run(QStringLiteral("RUN 10"));
         QCOMPARE(run.lines, QStringList{QStringLiteral("HELLO WORLD")});
+    }
+
+    // A verify whose P CHECKSUM got no number has not confirmed the program (the request may have reached the
+    // drive as a command that changed it, as in serialport.download_campaign): Failed, never Verified. The
+    // download then reads back once more, and that verify's checksum confirms it.
+    void aChecksumLostOnTheLineIsNotVerified() {
+        Fixture f;
+        QCOMPARE(download(f, kHelloWorld).status, Status::Ok);
+        f.noise.damaged = 1;
+        Bds5Verify verify(f.session, Bds5ProgramText::prepare(kHelloWorld, false));
+        const Bds5TransferResult unconfirmed = runTransfer(verify);
+        QCOMPARE(f.noise.damaged, 0);
+        QCOMPARE(unconfirmed.status, Status::Failed);
+        QVERIFY(!unconfirmed.checksum.has_value());
+        QVERIFY2(unconfirmed.summary.contains(QStringLiteral("P CHECKSUM gave no number")) &&
+                     unconfirmed.summary.contains(QStringLiteral("could not be confirmed")),
+                 qPrintable(unconfirmed.summary));
+
+        f.noise.damaged = 1;
+        const Bds5TransferResult r = download(f, QStringLiteral("20$\nP \"AGAIN\"\nB\n"));
+        QCOMPARE(f.noise.damaged, 0);
+        QCOMPARE(r.status, Status::Ok);
+        QVERIFY(r.checksum.has_value());
+        QVERIFY2(r.summary.contains(QStringLiteral("Verified")) &&
+                     r.summary.contains(QStringLiteral("P CHECKSUM = %1").arg(*r.checksum)),
+                 qPrintable(r.summary));
+        QCOMPARE(f.run(QStringLiteral("RUN 20")).lines, QStringList{QStringLiteral("AGAIN")});
     }
 
     void uploadReturnsTheSameText() {
