@@ -45,7 +45,7 @@ private:
     LoadParameters m_load;
     State m_x = State::Zero();
     double m_current_A = 0;
-    // What a step of m_planFor_s takes, worked out once (a servo period is the same every time; a new load
+    // What a step of Plan::dt_s takes, worked out once (a servo period is the same every time; a new load
     // asks again): its sub-steps, the current loop's decay and mean over one, and for a rigid shaft the
     // exact solution's coefficients (see stepRigidExactly).
     struct Plan {
