@@ -76,7 +76,7 @@ TEST(Bds5Tune, Tune30StepRiseTimeImpliesThirtyHertz) {
     for (std::string line; std::getline(lines, line);) {
         const auto first = line.find_first_not_of(' ');
         if (first != std::string::npos && (std::isdigit(static_cast<unsigned char>(line[first])) ||
-                                           line.compare(first, 2, "--") != 0 && line[first] == '-'))
+                                           (line.compare(first, 2, "--") != 0 && line[first] == '-')))
             vfb.push_back(std::stod(line.substr(first)));
     }
     ASSERT_GE(vfb.size(), 50u) << play;
