@@ -177,7 +177,9 @@ TEST(Bds5MotionProperty, RandomJtJfLandOnTheirPositionAfterTheFormulaTimes) {
         const double rampEnd = to ? double(position) : double(position) + rampDistance;
         if (v1 == 0) {
             ASSERT_FALSE(motion.moving()) << i;
-            if (to) EXPECT_EQ(motion.commandPosition_counts(), double(position)) << "JT 0 stops on the count, " << i;
+            if (to) {
+                EXPECT_EQ(motion.commandPosition_counts(), double(position)) << "JT 0 stops on the count, " << i;
+            }
             EXPECT_NEAR(motion.commandPosition_counts(), rampEnd, 1e-6 * std::abs(rampEnd) + 1e-6) << i;
             ++stops;
         } else { // at v1 since hold + ramp: where it is now says where the change ended
