@@ -121,11 +121,13 @@ std::size_t expectedRows(std::string_view rest, std::size_t columns) {
     return std::min(rest.size() / rowBytes * 5 / 4 + 16, rest.size() / (2 * columns) + 1);
 }
 
-// "VFB (VEL)" -> {"VFB", "VEL"}; "X1" -> {"X1", ""}.
+// "VFB (VEL)" -> {"VFB", "VEL"}; "X1" -> {"X1", ""}. The name ends at its last kept character: "V   ()"
+// is "V" with no unit, as written back it is read (capture_files_fuzz found "V  " kept as the name).
 CaptureChannel channelFromTitle(const std::string& title) {
     const auto open = title.find(" (");
     if (open == std::string::npos || title.back() != ')') return {title, "", {}};
-    return {title.substr(0, open), title.substr(open + 2, title.size() - open - 3), {}};
+    const std::string_view name = trimmed(std::string_view(title).substr(0, open));
+    return {std::string(name), title.substr(open + 2, title.size() - open - 3), {}};
 }
 
 // A time to the microsecond, the resolution the file keeps. Rounding is a fixed point only while t·1e6 has

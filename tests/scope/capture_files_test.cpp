@@ -93,6 +93,20 @@ TEST(CaptureCsv, ReadsASpreadsheetFileWithoutTheRecordLine) {
     EXPECT_EQ(r.capture->sampleCount(), 3u);
 }
 
+// A spreadsheet that pads a title before its unit ("VFB   (RPM)", "V   ()"): the name is the text before
+// the blanks, so the file ServoDesk writes back reads as the same channels (capture_files_fuzz finding).
+TEST(CaptureCsv, BlanksBeforeAUnitAreNotPartOfTheName) {
+    const auto r = readCsv("Time (s),VFB   (RPM),V   ()\n0,1,2\n");
+    ASSERT_TRUE(r.capture) << r.error;
+    EXPECT_EQ(r.capture->channels[0].name, "VFB");
+    EXPECT_EQ(r.capture->channels[0].unit, "RPM");
+    EXPECT_EQ(r.capture->channels[1].name, "V");
+    EXPECT_EQ(r.capture->channels[1].unit, "");
+    const std::string written = scope::writeCsv(*r.capture);
+    EXPECT_NE(written.find("Time (s),VFB (RPM),V\r\n"), std::string::npos) << written;
+    EXPECT_EQ(scope::writeCsv(*readCsv(written).capture), written);
+}
+
 TEST(CaptureCsv, NamesTheLineItCannotRead) {
     EXPECT_EQ(readCsv("RECORD,2,1,VFB\nTime (s),VFB\n0,1\n0.001,x\n").error, "line 4: \"x\" is not a number");
     EXPECT_EQ(readCsv("RECORD,2,1,VFB\nTime (s),VFB\n0,1,2\n").error, "line 3: 3 values, expected 2");
