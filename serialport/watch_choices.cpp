@@ -79,4 +79,16 @@ QStringList watchNames(drive_core::DriveFamily family) {
     return names;
 }
 
+QString watchMethod(drive_core::DriveFamily family) {
+    switch (family) {
+    case drive_core::DriveFamily::Bds5: return tr("P prints the ticked variables, polled as fast as the link answers.");
+    case drive_core::DriveFamily::Sc750:
+        return tr("Each is read with a G frame in turn, as fast as the controller answers; a running program "
+                  "keeps running.");
+    case drive_core::DriveFamily::Pmc960:
+        return tr("Each is an out-of-band status poll (<attn> g, f, v, i), answered even while a program runs.");
+    }
+    return {};
+}
+
 } // namespace serialport

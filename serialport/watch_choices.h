@@ -24,5 +24,7 @@ QList<WatchChoice> watchChoices(drive_core::DriveFamily family);
 // The family's choice of that name, whatever its case; nullopt when the family offers none by it.
 std::optional<WatchChoice> findWatchChoice(drive_core::DriveFamily family, const QString& name);
 QStringList watchNames(drive_core::DriveFamily family);
+// How a sample is read, for a chooser's tooltip ("P prints the ticked variables, ...").
+QString watchMethod(drive_core::DriveFamily family);
 
 } // namespace serialport

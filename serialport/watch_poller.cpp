@@ -45,9 +45,9 @@ void WatchPoller::cancel() {
     m_pending = 0;
 }
 
-int WatchPoller::minimumIntervalMs() const {
+int WatchPoller::minimumIntervalMs(drive_core::DriveFamily family) {
     // The PMC-960's status panel polls only while the line is idle: leave it idle half the time.
-    return m_session.family() == drive_core::DriveFamily::Pmc960 ? 25 : 0;
+    return family == drive_core::DriveFamily::Pmc960 ? 25 : 0;
 }
 
 void WatchPoller::pollNext() {

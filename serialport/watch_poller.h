@@ -2,9 +2,9 @@
 // family-neutral half of "watch" (servodesk-cli watch today). The BDS5 prints them with one "P A B" line at
 // its prompt; the SC750 answers a G frame per variable, a program running or not; the PMC-960 answers its
 // out-of-band status polls (<attn> g f v i for G!, SF!, V!, I!) at any time. The names are the family's
-// watch choices (watch_choices.h). The IDE's Watch Variables sources (app/scope/bds5_watch_source,
-// app/sc750/sc750_watch_source, app/pmc960/pmc960_watch_source) poll the same way over the family sessions
-// their workspaces hold; once those hold a DriveSession they can become thin adapters over this class.
+// watch choices (watch_choices.h). The IDE's Watch Variables reads through it for the SC750 and the
+// PMC-960 (app/scope/session_watch_source); the BDS5's keeps its P polls out of the terminal
+// (app/scope/bds5_watch_source).
 // GUI thread; never blocks. The session must outlive the poller.
 //
 //   poller.poll({"POSITION", "VELOCITY"});   // later: answered({1024, 30.5}) or failed("...", refused)
@@ -30,7 +30,8 @@ public:
     void cancel();
     bool isPolling() const { return m_pending != 0; }
     // The shortest time from one poll to the next that leaves the link room for the family's other polls.
-    int minimumIntervalMs() const;
+    int minimumIntervalMs() const { return minimumIntervalMs(m_session.family()); }
+    static int minimumIntervalMs(drive_core::DriveFamily family);
 
 signals:
     // One value per name; an empty list when the answer held no usable sample (a damaged line): poll again.

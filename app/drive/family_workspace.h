@@ -48,6 +48,9 @@ public:
     virtual serialport::Link* link() const { return nullptr; }
     // The family's errors for the Error Log dock (owned by the workspace), or nullptr.
     virtual ErrorSource* errorSource() const { return nullptr; }
+    // Why the link can take no poll now though connected ("a download is under way"), or empty when it can:
+    // the watch and the other polling tools wait while it says so.
+    virtual QString busyReason() const { return {}; }
     // The family's sample program, a resource (":/samples/hello.bas"): the first tab when the IDE starts
     // with this family, named after the resource's file name. Empty: the BDS5's opens instead.
     virtual QString sampleProgram() const { return {}; }

@@ -7,11 +7,11 @@
 #include "pmc960_program_transfer.h"
 #include "pmc960_routine_runner.h"
 #include "pmc960_status_dock.h"
-#include "pmc960_watch_source.h"
 
 #include "errors/pmc960_error_source.h"
 #include "main_window.h"
 #include "resources/resources.h"
+#include "scope/session_watch_source.h"
 #include "scope/watch_view.h"
 
 #include <QMenu>
@@ -84,8 +84,12 @@ Pmc960RunDialog* Pmc960Workspace::runRoutine() {
     return m_runner->ask();
 }
 
+QString Pmc960Workspace::busyReason() const {
+    return m_transfer->isBusy() ? tr("the program buffer is being transferred") : QString();
+}
+
 WatchView* Pmc960Workspace::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(new Pmc960WatchSource(*this), &m_window);
+    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(*this), &m_window);
     m_watch->show();
     m_watch->raise();
     return m_watch;

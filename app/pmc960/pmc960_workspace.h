@@ -42,6 +42,7 @@ public:
     QString statusText() const override;
     ErrorSource* errorSource() const override;
     QString sampleProgram() const override; // hello.mpl
+    QString busyReason() const override;
     // MPL is typed at the controller's } prompt: the Terminal talks to it (Esc = Stop).
     bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 

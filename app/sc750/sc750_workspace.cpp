@@ -11,12 +11,12 @@
 #include "sc750_output_dock.h"
 #include "sc750_status_display.h"
 #include "sc750_variables_dock.h"
-#include "sc750_watch_source.h"
 
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "file_types.h"
 #include "main_window.h"
+#include "scope/session_watch_source.h"
 #include "scope/watch_view.h"
 #include "terminal_dock.h"
 
@@ -138,8 +138,12 @@ void Sc750Workspace::createMenus() {
     m_optionsMenu = new Sc750ControllerMenu(*this, &m_window);
 }
 
+QString Sc750Workspace::busyReason() const {
+    return m_debugger->state() == Sc750Debugger::State::Downloading ? tr("a download is under way") : QString();
+}
+
 WatchView* Sc750Workspace::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(new Sc750WatchSource(*this), &m_window);
+    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(*this), &m_window);
     m_watch->show();
     m_watch->raise();
     return m_watch;

@@ -49,6 +49,7 @@ public:
     QString statusText() const override;
     ErrorSource* errorSource() const override;
     QString sampleProgram() const override; // hello.bas
+    QString busyReason() const override;
 
     // The session while the link is open, else nullptr.
     serialport::Sc750Session* session() const { return m_connected ? m_session : nullptr; }

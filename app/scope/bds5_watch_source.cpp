@@ -7,6 +7,7 @@
 
 #include "serialport/bds5_session.h"
 #include "serialport/bds5_transfer.h"
+#include "serialport/watch_choices.h"
 
 namespace app {
 
@@ -21,7 +22,7 @@ QList<WatchSource::Choice> Bds5WatchSource::choices() const {
 }
 
 QString Bds5WatchSource::method() const {
-    return tr("P prints the ticked variables, polled as fast as the link answers.");
+    return serialport::watchMethod(drive_core::DriveFamily::Bds5);
 }
 
 QString Bds5WatchSource::notReady() const {

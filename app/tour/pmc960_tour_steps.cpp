@@ -146,7 +146,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                      .act = [&window, watch] {
                          WatchView* view = *watch = pmc960(window)->watchVariables();
                          view->resize(900, 440);
-                         view->watch({QStringLiteral("g"), QStringLiteral("f")});
+                         view->watch({QStringLiteral("G"), QStringLiteral("SF")});
                      },
                      .ready = [&window, watch, indexed] {
                          if (!*watch || (*watch)->watcher().store().channelCount() == 0) return false;

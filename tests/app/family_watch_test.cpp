@@ -130,7 +130,7 @@ private slots:
         app::WatchView* view = ws.watchVariables();
         QVERIFY(view->windowTitle().contains(QStringLiteral("PMC-960")));
         QCOMPARE(view->chooser()->count(), 4);
-        view->watch({QStringLiteral("g"), QStringLiteral("f")});
+        view->watch({QStringLiteral("G"), QStringLiteral("SF")});
         const app::VariableWatcher& watcher = view->watcher();
         QTRY_VERIFY_WITH_TIMEOUT(watcher.store().channel(0).samples.size() >= 3, kTimeoutMs);
         QCOMPARE(valuesOf(watcher, 0).back(), 0.0); // at rest where it powered up

@@ -148,7 +148,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(status->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")),
                                  kDriveTimeoutMs);
         app::WatchView* view = ws.watchVariables();
-        const double level = armAbove(view, QStringLiteral("g"), 20000);
+        const double level = armAbove(view, QStringLiteral("G"), 20000);
         QVERIFY2(!std::isnan(level), qPrintable(view->triggerBar()->stateText()));
         QCOMPARE(view->trigger().status(), WatchTrigger::Status::Waiting);
         status->sendCommand(QStringLiteral("SM2"));

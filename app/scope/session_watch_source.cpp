@@ -1,0 +1,67 @@
+// SessionWatchSource: a WatchPoller over the workspace's session of the moment.
+#include "session_watch_source.h"
+
+#include "connection_choice.h"
+#include "family_workspace.h"
+
+#include "serialport/watch_choices.h"
+#include "serialport/watch_poller.h"
+
+namespace app {
+
+SessionWatchSource::SessionWatchSource(FamilyWorkspace& workspace, QObject* parent)
+    : WatchSource(parent), m_workspace(workspace) {}
+
+SessionWatchSource::~SessionWatchSource() {
+    delete m_poller;
+}
+
+QString SessionWatchSource::familyName() const {
+    return ConnectionChoice::familyName(m_workspace.family());
+}
+
+QList<WatchSource::Choice> SessionWatchSource::choices() const {
+    QList<Choice> list;
+    for (const serialport::WatchChoice& c : serialport::watchChoices(m_workspace.family()))
+        list.append({c.name, c.label, c.unit});
+    return list;
+}
+
+QString SessionWatchSource::method() const {
+    return serialport::watchMethod(m_workspace.family());
+}
+
+QString SessionWatchSource::notReady() const {
+    if (!m_workspace.driveSession()) return tr("the controller is not connected");
+    return m_workspace.busyReason();
+}
+
+serialport::WatchPoller* SessionWatchSource::poller() {
+    serialport::DriveSession* session = m_workspace.driveSession();
+    if (session != m_session || !m_poller) {
+        delete m_poller; // its session is gone (a reconnection) or another one took its place
+        m_poller = nullptr;
+        m_session = session;
+        if (!session) return nullptr;
+        m_poller = new serialport::WatchPoller(*session);
+        connect(m_poller, &serialport::WatchPoller::answered, this, &WatchSource::answered);
+        connect(m_poller, &serialport::WatchPoller::failed, this, &WatchSource::failed);
+    }
+    return m_poller;
+}
+
+void SessionWatchSource::poll(const QStringList& names) {
+    serialport::WatchPoller* p = poller();
+    if (!p) return emit failed(tr("the controller is not connected"), false);
+    p->poll(names);
+}
+
+void SessionWatchSource::cancel() {
+    if (m_poller && m_session) m_poller->cancel();
+}
+
+int SessionWatchSource::minimumIntervalMs() const {
+    return serialport::WatchPoller::minimumIntervalMs(m_workspace.family());
+}
+
+} // namespace app
