@@ -11,39 +11,27 @@ seconds=${1:-${SERVODESK_FUZZ_SECONDS:-30}}
 # another seed (SERVODESK_FUZZ_SEED=0 lets libFuzzer choose) for longer runs that look elsewhere.
 seed=${SERVODESK_FUZZ_SEED:-1}
 build=${SERVODESK_FUZZ_BUILD:-$root/build-fuzz}
-export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DSERVODESK_FUZZ=ON -DSERVODESK_BUILD_TESTS=ON "${launcher[@]}" >/dev/null
-
-# name  binary (under build-fuzz)  seed corpus (under tests)  extra flags
-targets=(
-    "bds5_drive_fuzz tests/fuzz tests/fuzz/corpus/bds5 -dict=$root/tests/fuzz/bds5.dict -max_len=4096"
-    "host_parsers_fuzz tests/fuzz tests/fuzz/corpus/host -max_len=4096"
-    "capture_files_fuzz tests/fuzz tests/fuzz/corpus/capture -max_len=8192"
-    "pmc960_drive_fuzz tests/fuzz tests/drive_core/pmc960/fuzz_corpus -max_len=4096"
-    "sc750_compiler_fuzz tests/drive_core tests/drive_core/sc750/examples -max_len=8192"
-)
-names=()
-for t in "${targets[@]}"; do names+=("${t%% *}"); done
-cmake --build "$build" -j "$(nproc)" --target "${names[@]}"
+# shellcheck source=fuzz-targets.sh
+source "$root/packaging/fuzz-targets.sh"
+build_fuzzers
 
 # Per target: executions, wall time and executions per second, and executions per CPU-second (user + sys
 # of the fuzzer process, from bash's time): on a shared, loaded machine the wall rate shows the load, the
 # CPU rate what the target costs (issue 20: bds5_drive_fuzz aims at 2,000 a second).
 TIMEFORMAT='%R %U %S'
 status=0
-for t in "${targets[@]}"; do
-    read -r name dir corpus flags <<<"$t"
+for t in "${fuzz_targets[@]}"; do
+    read -r name dir corpus seeds flags <<<"$t"
     work=$build/$name-corpus
     artifacts=$build/$name-artifacts/
-    mkdir -p "$work" "$artifacts"
+    mkdir -p "$work" "$artifacts" "$root/$corpus"
     log=$build/$name.log
     timing=$build/$name.time
     found=0
+    more=()
+    [ "$seeds" != - ] && more=("$root/$seeds")
     # shellcheck disable=SC2086
-    { time "$build/$dir/$name" "$work" "$root/$corpus" $flags -seed="$seed" -timeout=10 \
+    { time "$build/$dir/$name" "$work" "$root/$corpus" "${more[@]}" $flags -seed="$seed" -timeout=10 \
         -rss_limit_mb=2048 -max_total_time="$seconds" -artifact_prefix="$artifacts" -print_final_stats=1 \
         >"$log" 2>&1; } 2>"$timing" || found=1
     runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')

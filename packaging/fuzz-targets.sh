@@ -1,0 +1,23 @@
+# The libFuzzer targets, for run-fuzzers.sh and fuzz-campaign.sh (sourced; needs $root). One line each:
+#   name  binary folder (under the fuzz build)  kept corpus (under tests: new finds are merged here)
+#   other seed folder (or -)  extra flags
+fuzz_targets=(
+    "bds5_drive_fuzz tests/fuzz tests/fuzz/corpus/bds5 - -dict=$root/tests/fuzz/bds5.dict -max_len=4096"
+    "host_parsers_fuzz tests/fuzz tests/fuzz/corpus/host - -max_len=4096"
+    "capture_files_fuzz tests/fuzz tests/fuzz/corpus/capture - -max_len=8192"
+    "pmc960_drive_fuzz tests/fuzz tests/drive_core/pmc960/fuzz_corpus - -max_len=4096"
+    "sc750_compiler_fuzz tests/drive_core tests/fuzz/corpus/sc750-compiler tests/drive_core/sc750/examples -max_len=8192"
+)
+fuzz_target_names=()
+for t in "${fuzz_targets[@]}"; do fuzz_target_names+=("${t%% *}"); done
+
+# Configures the clang + ASan + UBSan build in $build and builds the named targets (all when none named).
+build_fuzzers() {
+    export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
+    local launcher=()
+    command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+    CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DSERVODESK_FUZZ=ON -DSERVODESK_BUILD_TESTS=ON "${launcher[@]}" >/dev/null
+    if [ $# -eq 0 ]; then set -- "${fuzz_target_names[@]}"; fi
+    cmake --build "$build" -j "$(nproc)" --target "$@"
+}
