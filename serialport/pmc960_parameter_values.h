@@ -1,7 +1,7 @@
 // How one catalog parameter of the PMC-960 is read and written: the display command for its stored (?) and
 // in-use (!) value, the value inside the controller's reply ("P-16" -> "16", "F0 R0" -> "0"), and a typed
 // value checked against the catalog's limits before it goes out. Shared by the IDE's parameter table
-// (app/pmc960/pmc960_parameter_dock) and the parameter file (pmc960_parameter_file.h). Pure; any thread.
+// (app/families/pmc960/pmc960_parameter_dock) and the parameter file (pmc960_parameter_file.h). Pure; any thread.
 #pragma once
 
 #include "drive_core/catalog/pmc960_catalog.h"

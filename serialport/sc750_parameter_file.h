@@ -1,6 +1,6 @@
 // Sc750ParameterFile: the SC750's set-up parameters as Motion Dialogue writes them — the PARAMS block at the
 // top of a program (L943-L975) and the .PRM parameter set (DEFAULT.PRM, L2434-L2436). One reader and writer
-// for Controller Set Up and Edit Parameters (app/sc750/sc750_setup_dialog) and servodesk-cli's vars dump/send.
+// for Controller Set Up and Edit Parameters (app/families/sc750/sc750_setup_dialog) and servodesk-cli's vars dump/send.
 //
 // Format (the manual prints the block, L943-L975, but not the .PRM's layout; chosen: a .PRM is the block
 // itself after ' comment lines, so it pastes into a program and Edit Parameters reads it back):

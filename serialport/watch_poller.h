@@ -4,7 +4,7 @@
 // out-of-band status polls (<attn> g f v i for G!, SF!, V!, I!) at any time. The names are the family's
 // watch choices (watch_choices.h). The IDE's Watch Variables reads through it for the SC750 and the
 // PMC-960 (app/scope/session_watch_source); the BDS5's keeps its P polls out of the terminal
-// (app/scope/bds5_watch_source).
+// (app/families/bds5/bds5_watch_source).
 // GUI thread; never blocks. The session must outlive the poller.
 //
 //   poller.poll({"POSITION", "VELOCITY"});   // later: answered({1024, 30.5}) or failed("...", refused)

@@ -1,7 +1,7 @@
 // ErrorLogDock: one table, the chosen family's source behind it; read, clear and export.
 #include "error_log_dock.h"
 
-#include "bds5_error_source.h"
+#include "families/bds5/bds5_error_source.h"
 #include "error_log_model.h"
 
 #include <QFile>

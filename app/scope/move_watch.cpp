@@ -1,7 +1,7 @@
 // MoveWatch: the plan's answers and the drive's own error lines, while a recording runs.
 #include "move_watch.h"
 
-#include "errors/bds5_error_text.h"
+#include "families/bds5/bds5_error_text.h"
 
 #include <QTimer>
 

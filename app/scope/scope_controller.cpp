@@ -17,7 +17,7 @@
 #include "transfer_reporter.h"
 #include "tuning_panel.h"
 #include "terminal_tabs.h"
-#include "bds5_watch_source.h"
+#include "families/bds5/bds5_watch_source.h"
 #include "watch_view.h"
 
 #include "scope/capture_csv.h"

@@ -5,16 +5,16 @@
 #include "drive_connection.h"
 #include "main_window.h"
 
-#include "dep01/dep01_panel.h"
+#include "families/bds5/dep01/dep01_panel.h"
 #include "errors/error_log_dock.h"
 #include "errors/error_log_model.h"
 #include "io/io_panel.h"
 #include "serialport/simulator_link.h"
 #include "variables/variable_model.h"
 #include "variables/variables_dock.h"
-#include "wizard/parameter_page.h"
-#include "wizard/setup_wizard.h"
-#include "wizard/wizard_changes.h"
+#include "families/bds5/wizard/parameter_page.h"
+#include "families/bds5/wizard/setup_wizard.h"
+#include "families/bds5/wizard/wizard_changes.h"
 
 #include <QCheckBox>
 #include <QPointer>

@@ -15,9 +15,9 @@
 #include "spectrum_tour_steps.h"
 #include "math_trigger_tour_steps.h"
 #include "cursors_xy_tour_steps.h"
-#include "sc750_tour_steps.h"
+#include "families/sc750/sc750_tour_steps.h"
 #include "tuning_tour_steps.h"
-#include "pmc960_tour_steps.h"
+#include "families/pmc960/pmc960_tour_steps.h"
 #include "shot_facts.h"
 
 #include "drive_core/bds5/bds5_drive.h"

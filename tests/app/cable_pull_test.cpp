@@ -5,7 +5,7 @@
 // SC750 and PMC-960 workspaces reconnect the same way (LinkReconnector).
 #include "app/drive/drive_connection.h"
 #include "app/main_window.h"
-#include "app/pmc960/pmc960_workspace.h"
+#include "families/pmc960/pmc960_workspace.h"
 
 #include "editor/program_editor.h"
 #include "serialport/bds5_download.h"

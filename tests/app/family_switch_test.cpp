@@ -10,7 +10,7 @@
 #include "app/drive/family_workspace.h"
 #include "app/drive/terminal_widget.h"
 #include "app/main_window.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/sc750/sc750_workspace.h"
 
 #include <QComboBox>
 #include <QLabel>

@@ -5,8 +5,8 @@
 // of a run (the bench's command probe against its output) widens with the velocity gain. On a serial port the
 // runner polls the speed instead.
 #include "app/main_window.h"
-#include "app/pmc960/pmc960_workspace.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/pmc960/pmc960_workspace.h"
+#include "families/sc750/sc750_workspace.h"
 #include "app/scope/bode_view.h"
 #include "app/scope/scope_view.h"
 #include "app/tuning/family_tuning_panel.h"

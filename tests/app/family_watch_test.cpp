@@ -4,11 +4,11 @@
 // index — and plots them, labelled with the measured sample rate. A name the controller does not know
 // stops the chart with its answer.
 #include "app/main_window.h"
-#include "app/pmc960/pmc960_status_dock.h"
-#include "app/pmc960/pmc960_workspace.h"
-#include "app/sc750/sc750_controller_menu.h"
-#include "app/sc750/sc750_debugger.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/pmc960/pmc960_status_dock.h"
+#include "families/pmc960/pmc960_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_debugger.h"
+#include "families/sc750/sc750_workspace.h"
 #include "app/scope/variable_watcher.h"
 #include "app/scope/watch_source.h"
 #include "app/scope/watch_view.h"

@@ -3,8 +3,8 @@
 // and the bench goes through SimulatorLink::control, never the serial line; a load torque on the bench is held
 // by the motor's current, and Power Cycle brings the sign-on back with the drive disabled. Plus the DEP-01.
 #include "app_test_support.h"
-#include "app/dep01/dep01_panel.h"
-#include "app/dep01/dep01_screen.h"
+#include "families/bds5/dep01/dep01_panel.h"
+#include "families/bds5/dep01/dep01_screen.h"
 #include "app/drive/drive_connection.h"
 #include "app/io/io_panel.h"
 #include "app/main_window.h"

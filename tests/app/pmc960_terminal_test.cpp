@@ -2,7 +2,7 @@
 // reaches the simulated controller and its echo and prompt appear, the status polls' answers do not; Esc
 // is Stop. With the SC750 the terminal says where its program's I/O is instead.
 #include "app/main_window.h"
-#include "app/pmc960/pmc960_workspace.h"
+#include "families/pmc960/pmc960_workspace.h"
 #include "app/drive/terminal_widget.h"
 
 #include <QSettings>

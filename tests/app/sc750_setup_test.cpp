@@ -2,11 +2,11 @@
 // Set Up Data" screen pre-filled from the motor, the computed values following an edit of it, a bad value
 // refused, and OK writing the computed value into the program's PARAMS block and the controller.
 #include "app/main_window.h"
-#include "app/sc750/sc750_controller_menu.h"
-#include "app/sc750/sc750_setup_data_table.h"
-#include "app/sc750/sc750_setup_dialog.h"
-#include "app/sc750/sc750_variables_dock.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_setup_data_table.h"
+#include "families/sc750/sc750_setup_dialog.h"
+#include "families/sc750/sc750_variables_dock.h"
+#include "families/sc750/sc750_workspace.h"
 
 #include "editor/program_editor.h"
 

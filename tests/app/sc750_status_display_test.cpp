@@ -2,11 +2,11 @@
 // connecting and 8 once enabled, the decimal point lit while a program runs and dark after Stop, and a
 // run-time error flashing F and 4 in turn (seed-sc750 §6.1), all learnt from the controller's `?` answers.
 #include "app/main_window.h"
-#include "app/sc750/sc750_controller_menu.h"
-#include "app/sc750/sc750_debugger.h"
-#include "app/sc750/sc750_seven_segment.h"
-#include "app/sc750/sc750_status_display.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_debugger.h"
+#include "families/sc750/sc750_seven_segment.h"
+#include "families/sc750/sc750_status_display.h"
+#include "families/sc750/sc750_workspace.h"
 
 #include "editor/program_editor.h"
 

@@ -2,12 +2,12 @@
 // predefined variable of the catalog in its group, live values read with G frames, an edit checked against
 // the catalog before a P frame goes out, the controller's refusal while a program runs, Add to Watch.
 #include "app/main_window.h"
-#include "app/sc750/sc750_controller_menu.h"
-#include "app/sc750/sc750_debugger.h"
-#include "app/sc750/sc750_variable_browser.h"
-#include "app/sc750/sc750_variable_groups.h"
-#include "app/sc750/sc750_variables_dock.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_debugger.h"
+#include "families/sc750/sc750_variable_browser.h"
+#include "families/sc750/sc750_variable_groups.h"
+#include "families/sc750/sc750_variables_dock.h"
+#include "families/sc750/sc750_workspace.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 #include "editor/program_editor.h"

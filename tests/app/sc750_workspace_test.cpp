@@ -4,13 +4,13 @@
 // changed while stopped, and the watched ones read again at every stop; Continue resumes; Ctrl C in the editor
 // stops; switching family takes the execution arrow away; ServoBASIC colours and F1 help.
 #include "app/main_window.h"
-#include "app/sc750/sc750_controller_menu.h"
-#include "app/sc750/sc750_debugger.h"
-#include "app/sc750/sc750_function_dialog.h"
-#include "app/sc750/sc750_output_dock.h"
-#include "app/sc750/sc750_setup_dialog.h"
-#include "app/sc750/sc750_variables_dock.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_debugger.h"
+#include "families/sc750/sc750_function_dialog.h"
+#include "families/sc750/sc750_output_dock.h"
+#include "families/sc750/sc750_setup_dialog.h"
+#include "families/sc750/sc750_variables_dock.h"
+#include "families/sc750/sc750_workspace.h"
 
 #include "editor/help_popup.h"
 #include "editor/program_editor.h"

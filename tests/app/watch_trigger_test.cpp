@@ -4,11 +4,11 @@
 // The chart shows the one frame, the trigger sample a quarter of the way in where the value crosses the level,
 // at time 0 on the chart, and Single stopped the polls. Waits on the drive's answers only.
 #include "app/main_window.h"
-#include "app/pmc960/pmc960_status_dock.h"
-#include "app/pmc960/pmc960_workspace.h"
-#include "app/sc750/sc750_controller_menu.h"
-#include "app/sc750/sc750_debugger.h"
-#include "app/sc750/sc750_workspace.h"
+#include "families/pmc960/pmc960_status_dock.h"
+#include "families/pmc960/pmc960_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_debugger.h"
+#include "families/sc750/sc750_workspace.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/trigger_bar.h"
 #include "app/scope/tuning_panel.h"

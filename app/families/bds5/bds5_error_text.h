@@ -2,7 +2,7 @@
 // severity (App. D, Table D.1), the catalog's meaning and the manual's remedy (catalog_error_entry.h). Pure.
 #pragma once
 
-#include "error_log_model.h"
+#include "errors/error_log_model.h"
 
 #include "serialport/bds5_protocol.h"
 

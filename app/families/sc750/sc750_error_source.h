@@ -8,7 +8,7 @@
 // cleared by Reset Program or the next Run, as in Motion Dialogue, never behind the user's back.
 #pragma once
 
-#include "error_source.h"
+#include "errors/error_source.h"
 
 #include "editor/program_editor.h"
 #include "serialport/sc750_session.h"

@@ -5,7 +5,7 @@
 // of the drive would check first. Pure; no I/O.
 #pragma once
 
-#include "error_log_model.h"
+#include "errors/error_log_model.h"
 
 #include <QCoreApplication>
 

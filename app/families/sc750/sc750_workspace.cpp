@@ -3,7 +3,7 @@
 
 #include "tuning/family_tuning_panel.h"
 
-#include "errors/sc750_error_source.h"
+#include "families/sc750/sc750_error_source.h"
 
 #include "sc750_controller_menu.h"
 #include "sc750_debugger.h"

@@ -2,7 +2,7 @@
 #include "bds5_watch_source.h"
 
 #include "drive_connection.h"
-#include "scope_catalog.h"
+#include "scope/scope_catalog.h"
 #include "transfer_dialog.h"
 
 #include "serialport/bds5_session.h"

@@ -8,7 +8,7 @@
 #include "pmc960_routine_runner.h"
 #include "pmc960_status_dock.h"
 
-#include "errors/pmc960_error_source.h"
+#include "families/pmc960/pmc960_error_source.h"
 #include "main_window.h"
 #include "resources/resources.h"
 #include "scope/session_watch_source.h"

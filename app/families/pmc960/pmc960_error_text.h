@@ -4,7 +4,7 @@
 // and otherwise what the explanation implies. Pure; no I/O.
 #pragma once
 
-#include "error_log_model.h"
+#include "errors/error_log_model.h"
 
 #include <QCoreApplication>
 

@@ -9,7 +9,7 @@
 // to clear), so Read fills the log's one "history" row from the `&` snapshot and Clear empties the log.
 #pragma once
 
-#include "error_source.h"
+#include "errors/error_source.h"
 
 #include "serialport/pmc960_session.h"
 

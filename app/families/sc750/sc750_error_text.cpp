@@ -1,7 +1,7 @@
 // Sc750ErrorText: SC750 faults, run-time and compile errors with the catalog's words and our hints.
 #include "sc750_error_text.h"
 
-#include "catalog_error_entry.h"
+#include "errors/catalog_error_entry.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 

@@ -2,8 +2,8 @@
 // arrive (bell-led lines in its byte stream), ERR CLR. Talks only through the connection's session.
 #pragma once
 
-#include "error_source.h"
-#include "error_stream_scanner.h"
+#include "errors/error_source.h"
+#include "errors/error_stream_scanner.h"
 
 #include "serialport/bds5_session.h"
 

@@ -1,7 +1,7 @@
 // Bds5ErrorText: BDS5 error lines with the catalog's words.
 #include "bds5_error_text.h"
 
-#include "catalog_error_entry.h"
+#include "errors/catalog_error_entry.h"
 
 #include "drive_core/catalog/bds5_catalog.h"
 

@@ -2,11 +2,11 @@
 #include "pmc960_error_source.h"
 
 #include "pmc960_error_text.h"
-#include "program_line_jump.h"
+#include "errors/program_line_jump.h"
 
-#include "pmc960/pmc960_program_transfer.h"
-#include "pmc960/pmc960_routine_runner.h"
-#include "pmc960/pmc960_workspace.h"
+#include "families/pmc960/pmc960_program_transfer.h"
+#include "families/pmc960/pmc960_routine_runner.h"
+#include "families/pmc960/pmc960_workspace.h"
 
 #include "editor_area.h"
 #include "editor_tabs.h"

@@ -1,7 +1,7 @@
 // Pmc960ErrorText: #xx codes with the catalog's words, a severity and a hint.
 #include "pmc960_error_text.h"
 
-#include "catalog_error_entry.h"
+#include "errors/catalog_error_entry.h"
 
 #include "drive_core/catalog/drive_catalog.h"
 

@@ -1,14 +1,14 @@
 // Sc750ErrorSource: run-time errors, compile errors and FAULTCODE of the SC750 as error log rows.
 #include "sc750_error_source.h"
 
-#include "program_line_jump.h"
+#include "errors/program_line_jump.h"
 #include "sc750_error_text.h"
 
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "main_window.h"
-#include "sc750/sc750_debugger.h"
-#include "sc750/sc750_workspace.h"
+#include "families/sc750/sc750_debugger.h"
+#include "families/sc750/sc750_workspace.h"
 
 #include "editor/program_editor.h"
 

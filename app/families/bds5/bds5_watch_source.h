@@ -4,7 +4,7 @@
 // RECORD cannot take. GUI thread only.
 #pragma once
 
-#include "watch_source.h"
+#include "scope/watch_source.h"
 
 namespace serialport {
 struct Bds5Response;
