@@ -1,8 +1,8 @@
 // ErrorLogDock: one table, the chosen family's source behind it; read, clear and export.
 #include "error_log_dock.h"
 
-#include "families/bds5/bds5_error_source.h"
 #include "error_log_model.h"
+#include "families/bds5/bds5_error_source.h"
 
 #include <QFile>
 #include <QFileDialog>
@@ -83,10 +83,11 @@ void ErrorLogDock::showSource(ErrorSource* source) {
     m_view->setColumnWidth(ErrorLogModel::Message, 340); // room for a PMC-960 snapshot or an SC750 message
     m_view->setColumnWidth(ErrorLogModel::Line, 50);
     m_view->setColumnWidth(ErrorLogModel::Source, 90);
-    m_read->setText(source->readText());
-    m_read->setToolTip(source->readToolTip());
-    m_read->setVisible(!source->readText().isEmpty());
-    m_clear->setToolTip(source->clearToolTip());
+    const ErrorSource::Buttons& buttons = source->buttons();
+    m_read->setText(buttons.readText);
+    m_read->setToolTip(buttons.readToolTip);
+    m_read->setVisible(!buttons.readText.isEmpty());
+    m_clear->setToolTip(buttons.clearToolTip);
     setStatus(source->statusText().isEmpty() ? tr("Double-click an error that names a line to go there.")
                                              : source->statusText());
 }

@@ -8,22 +8,29 @@
 
 #include <QObject>
 
+#include <utility>
+
 namespace app {
 
 class ErrorSource : public QObject {
     Q_OBJECT
 public:
-    explicit ErrorSource(drive_core::DriveFamily family, QObject* parent = nullptr)
-        : QObject(parent), m_model(new ErrorLogModel(family, this)) {}
+    // The dock's buttons in the family's words: the Read button's text (empty hides it: the family keeps
+    // no record) and tool tip, and what Clear does.
+    struct Buttons {
+        QString readText;
+        QString readToolTip;
+        QString clearToolTip;
+    };
+
+    ErrorSource(drive_core::DriveFamily family, Buttons buttons, QObject* parent = nullptr)
+        : QObject(parent), m_model(new ErrorLogModel(family, this)), m_buttons(std::move(buttons)) {}
 
     drive_core::DriveFamily family() const { return m_model->family(); }
     ErrorLogModel& model() const { return *m_model; }
     QString statusText() const { return m_status; }
 
-    // The Read button's text and tool tip; an empty text hides the button (the family keeps no record).
-    virtual QString readText() const = 0;
-    virtual QString readToolTip() const = 0;
-    virtual QString clearToolTip() const = 0;
+    const Buttons& buttons() const { return m_buttons; }
     // Reads the drive's record into the history rows; the outcome arrives in the status line.
     virtual void read() = 0;
     // Empties the log (and the drive's record where the drive has a command for it).
@@ -45,6 +52,7 @@ protected:
 
 private:
     ErrorLogModel* m_model;
+    Buttons m_buttons;
     QString m_status;
 };
 

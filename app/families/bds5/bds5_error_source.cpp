@@ -7,20 +7,12 @@
 namespace app {
 
 Bds5ErrorSource::Bds5ErrorSource(DriveConnection& connection, QObject* parent)
-    : ErrorSource(drive_core::DriveFamily::Bds5, parent), m_connection(connection) {
+    : ErrorSource(drive_core::DriveFamily::Bds5,
+                  {tr("Read History"), tr("ERR HIST: the drive's 20 most recent errors, newest first"),
+                   tr("ERR CLR: clears the drive's error history")},
+                  parent),
+      m_connection(connection) {
     connect(&m_connection, &DriveConnection::rawReceived, this, &Bds5ErrorSource::onBytes);
-}
-
-QString Bds5ErrorSource::readText() const {
-    return tr("Read History");
-}
-
-QString Bds5ErrorSource::readToolTip() const {
-    return tr("ERR HIST: the drive's 20 most recent errors, newest first");
-}
-
-QString Bds5ErrorSource::clearToolTip() const {
-    return tr("ERR CLR: clears the drive's error history");
 }
 
 void Bds5ErrorSource::follow() {

@@ -18,9 +18,6 @@ class Bds5ErrorSource final : public ErrorSource {
 public:
     explicit Bds5ErrorSource(DriveConnection& connection, QObject* parent = nullptr);
 
-    QString readText() const override;
-    QString readToolTip() const override;
-    QString clearToolTip() const override;
     void read() override;  // ERR HIST
     void clear() override; // ERR CLR, then ERR HIST to show it is empty
 

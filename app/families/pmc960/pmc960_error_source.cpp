@@ -1,8 +1,8 @@
 // Pmc960ErrorSource: #xx answers, asynchronous E-codes and the `&` error snapshot as error log rows.
 #include "pmc960_error_source.h"
 
-#include "pmc960_error_text.h"
 #include "errors/program_line_jump.h"
+#include "pmc960_error_text.h"
 
 #include "families/pmc960/pmc960_program_transfer.h"
 #include "families/pmc960/pmc960_routine_runner.h"
@@ -26,21 +26,15 @@ constexpr int kMaxShown = 256;
 } // namespace
 
 Pmc960ErrorSource::Pmc960ErrorSource(Pmc960Workspace& workspace)
-    : ErrorSource(drive_core::DriveFamily::Pmc960, &workspace), m_workspace(workspace) {
+    : ErrorSource(
+          drive_core::DriveFamily::Pmc960,
+          {tr("Read Last Error"),
+           tr("SE& and the error-status buffer: the controller's last error, with the position, speed, mode and "
+              "label at the time"),
+           tr("Empties this log (the PMC-960 keeps only its last error, which the next one replaces)")},
+          &workspace),
+      m_workspace(workspace) {
     connect(&workspace, &FamilyWorkspace::statusChanged, this, &Pmc960ErrorSource::follow);
-}
-
-QString Pmc960ErrorSource::readText() const {
-    return tr("Read Last Error");
-}
-
-QString Pmc960ErrorSource::readToolTip() const {
-    return tr("SE& and the error-status buffer: the controller's last error, with the position, speed, mode and "
-              "label at the time");
-}
-
-QString Pmc960ErrorSource::clearToolTip() const {
-    return tr("Empties this log (the PMC-960 keeps only its last error, which the next one replaces)");
 }
 
 void Pmc960ErrorSource::follow() {

@@ -26,9 +26,6 @@ class Pmc960ErrorSource final : public ErrorSource {
 public:
     explicit Pmc960ErrorSource(Pmc960Workspace& workspace);
 
-    QString readText() const override;
-    QString readToolTip() const override;
-    QString clearToolTip() const override;
     void read() override;
     void clear() override;
     bool showLine(const ErrorLogModel::Entry& entry) override;

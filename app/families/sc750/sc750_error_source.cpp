@@ -6,34 +6,27 @@
 
 #include "editor_area.h"
 #include "editor_tabs.h"
-#include "main_window.h"
 #include "families/sc750/sc750_debugger.h"
 #include "families/sc750/sc750_workspace.h"
+#include "main_window.h"
 
 #include "editor/program_editor.h"
 
 namespace app {
 
 Sc750ErrorSource::Sc750ErrorSource(Sc750Workspace& workspace)
-    : ErrorSource(drive_core::DriveFamily::Sc750, &workspace), m_workspace(workspace) {
+    : ErrorSource(drive_core::DriveFamily::Sc750,
+                  {tr("Read Fault"),
+                   tr("Reads FAULTCODE, the fault the controller's display shows (the SC750 keeps no error history)"),
+                   tr("Empties this log; Reset Program clears a run-time error (F 4) on the controller")},
+                  &workspace),
+      m_workspace(workspace) {
     connect(&workspace, &FamilyWorkspace::statusChanged, this, &Sc750ErrorSource::follow);
     connect(&workspace.debugger(), &Sc750Debugger::compileFailed, this,
             [this](int line, int column, const QString& message) {
                 m_compiled = m_workspace.window().editor();
                 model().addReported(Sc750ErrorText::compileError(line, column, message), QDateTime::currentDateTime());
             });
-}
-
-QString Sc750ErrorSource::readText() const {
-    return tr("Read Fault");
-}
-
-QString Sc750ErrorSource::readToolTip() const {
-    return tr("Reads FAULTCODE, the fault the controller's display shows (the SC750 keeps no error history)");
-}
-
-QString Sc750ErrorSource::clearToolTip() const {
-    return tr("Empties this log; Reset Program clears a run-time error (F 4) on the controller");
 }
 
 void Sc750ErrorSource::follow() {

@@ -24,9 +24,6 @@ class Sc750ErrorSource final : public ErrorSource {
 public:
     explicit Sc750ErrorSource(Sc750Workspace& workspace);
 
-    QString readText() const override;
-    QString readToolTip() const override;
-    QString clearToolTip() const override;
     void read() override;
     void clear() override;
     bool showLine(const ErrorLogModel::Entry& entry) override;
