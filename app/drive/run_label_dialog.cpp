@@ -3,6 +3,7 @@
 
 #include "drive_core/bds5/bds5_program.h"
 #include "editor/bds5_outline.h"
+#include "theme.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -110,8 +111,7 @@ void RunLabelDialog::check() {
                   "label either.")
                    .arg(*label);
     }
-    m_note->setText(note);
-    m_note->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+    Theme::showStatus(*m_note, note, error);
     m_note->setVisible(!note.isEmpty());
 }
 

@@ -8,6 +8,7 @@
 #include <Qsci/qscilexer.h>
 #include <Qsci/qsciscintilla.h>
 
+#include <QLabel>
 #include <QVariantList>
 
 namespace app {
@@ -53,8 +54,10 @@ QColor Theme::stepHighlight(AppOptions::Theme theme) {
 }
 
 void Theme::applyToTerminal(TerminalWidget& terminal, AppOptions::Theme theme) {
-    if (theme == AppOptions::Theme::Dark) terminal.setColours(kDarkPaper, kDarkText);
-    else terminal.setColours(kLightTerminal, kLightTerminalText);
+    if (theme == AppOptions::Theme::Dark)
+        terminal.setColours(kDarkPaper, kDarkText);
+    else
+        terminal.setColours(kLightTerminal, kLightTerminalText);
 }
 
 void Theme::applyToEditor(QsciScintilla& editor, AppOptions::Theme theme) {
@@ -82,6 +85,11 @@ void Theme::applyToEditor(QsciScintilla& editor, AppOptions::Theme theme) {
         lexer->setColor(dark ? forDarkBackground(fg) : fg, style);
         lexer->setPaper(dark ? kDarkPaper : bg, style);
     }
+}
+
+void Theme::showStatus(QLabel& label, const QString& text, bool error) {
+    label.setText(text);
+    label.setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
 }
 
 } // namespace app

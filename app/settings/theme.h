@@ -7,6 +7,7 @@
 
 #include <QColor>
 
+class QLabel;
 class QsciScintilla;
 
 namespace app {
@@ -21,6 +22,8 @@ public:
     static QColor stepHighlight(AppOptions::Theme theme);
     // A colour readable on the dark background with the same hue (dark text becomes light).
     static QColor forDarkBackground(const QColor& colour);
+    // A dialog's or a dock's status line: the text, in red when it reports a refusal or an error.
+    static void showStatus(QLabel& label, const QString& text, bool error);
 };
 
 } // namespace app

@@ -2,6 +2,7 @@
 #include "pmc960_parameter_dock.h"
 
 #include "pmc960_program_transfer.h"
+#include "theme.h"
 
 #include "serialport/pmc960_parameter_values.h"
 #include "serialport/pmc960_session.h"
@@ -43,7 +44,8 @@ Pmc960ParameterDock::Pmc960ParameterDock(QWidget* parent)
     connect(m_filter, &QLineEdit::textChanged, this, &Pmc960ParameterDock::setFilter);
     m_table = new QTableWidget(int(parameters().size()), ColumnCount, body);
     m_table->setObjectName(QStringLiteral("pmc960ParameterTable"));
-    m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("Stored (?)"), tr("In use (!)"), tr("Range"), tr("Description")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("Parameter"), tr("Stored (?)"), tr("In use (!)"), tr("Range"), tr("Description")});
     m_table->verticalHeader()->hide();
     m_table->setAlternatingRowColors(true);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -132,8 +134,9 @@ void Pmc960ParameterDock::onFinished(quint64 id, const serialport::Pmc960Respons
         const Read r = *read;
         m_reads.erase(read);
         const Pmc960Parameter& p = parameters()[std::size_t(r.row)];
-        setCell(r.row, r.column, response.error ? QStringLiteral("#%1").arg(response.error, 2, 16).toUpper()
-                                                : valueFromDisplay(p, response.value));
+        setCell(r.row, r.column,
+                response.error ? QStringLiteral("#%1").arg(response.error, 2, 16).toUpper()
+                               : valueFromDisplay(p, response.value));
         markDifference(r.row);
         if (m_reads.isEmpty()) emit refreshed();
         return;
@@ -193,7 +196,8 @@ void Pmc960ParameterDock::setFilter(const QString& text) {
     if (m_filter->text() != text) m_filter->setText(text); // comes back here through textChanged
     const QString wanted = text.trimmed();
     for (int row = 0; row < m_table->rowCount(); ++row) {
-        const bool match = wanted.isEmpty() || m_table->item(row, NameColumn)->text().contains(wanted, Qt::CaseInsensitive) ||
+        const bool match = wanted.isEmpty() ||
+                           m_table->item(row, NameColumn)->text().contains(wanted, Qt::CaseInsensitive) ||
                            m_table->item(row, DescriptionColumn)->text().contains(wanted, Qt::CaseInsensitive);
         m_table->setRowHidden(row, !match);
     }
@@ -234,8 +238,8 @@ void Pmc960ParameterDock::setCell(int row, int column, const QString& text) {
 void Pmc960ParameterDock::markDifference(int row) {
     // Stored and in-use values differ after a generic power-up, or for the motion buffer while moving.
     QTableWidgetItem* inUse = m_table->item(row, InUseColumn);
-    const bool differs = inUse->text() != m_table->item(row, StoredColumn)->text() &&
-                         inUse->text() != QStringLiteral("\u2014");
+    const bool differs =
+        inUse->text() != m_table->item(row, StoredColumn)->text() && inUse->text() != QStringLiteral("\u2014");
     m_updating = true;
     inUse->setBackground(differs ? QColor(0xff, 0xf4, 0xce) : QBrush());
     inUse->setToolTip(differs ? tr("The value in use differs from the stored one") : QString());
@@ -243,8 +247,7 @@ void Pmc960ParameterDock::markDifference(int row) {
 }
 
 void Pmc960ParameterDock::showMessage(const QString& text, bool error) {
-    m_message->setText(text);
-    m_message->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+    Theme::showStatus(*m_message, text, error);
 }
 
 } // namespace app

@@ -9,6 +9,7 @@
 #include "pmc960_status_dock.h"
 
 #include "families/pmc960/pmc960_error_source.h"
+#include "serialport/pmc960_drive_session.h"
 #include "main_window.h"
 #include "resources/resources.h"
 #include "scope/session_watch_source.h"
@@ -23,20 +24,14 @@ namespace {
 constexpr char kEsc = '\x1b';
 }
 
-Pmc960Workspace::Pmc960Workspace(MainWindow& window)
-    : FamilyWorkspace(&window), m_window(window), m_transfer(new Pmc960ProgramTransfer(*this)),
-      m_status(new Pmc960StatusDock(&window)), m_parameters(new Pmc960ParameterDock(&window)),
-      m_menu(new QMenu(tr("&MPL"), &window)), m_errors(new Pmc960ErrorSource(*this)),
-      m_runner(new Pmc960RoutineRunner(*this)), m_tuning(makeFamilyTuningDock(window, family())) {
-    connect(&m_reconnector, &LinkReconnector::lost, this, [this](const QString& description) {
-        emit message(tr("The connection to the PMC-960 was lost (%1). Reconnecting every second; nothing in the "
-                        "editors is affected. Drive > Disconnect stops trying.")
-                         .arg(description));
-        emit statusChanged();
-    });
+Pmc960Workspace::Pmc960Workspace(MainWindow& mainWindow)
+    : SessionWorkspace(mainWindow, drive_core::DriveFamily::Pmc960), m_transfer(new Pmc960ProgramTransfer(*this)),
+      m_status(new Pmc960StatusDock(&mainWindow)), m_parameters(new Pmc960ParameterDock(&mainWindow)),
+      m_menu(new QMenu(tr("&MPL"), &mainWindow)), m_errors(new Pmc960ErrorSource(*this)),
+      m_runner(new Pmc960RoutineRunner(*this)) {
     m_menu->setObjectName(QStringLiteral("mplMenu"));
     QAction* download = m_menu->addAction(tr("&Download Program"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
-                                          [this] { m_transfer->download(m_window.editor()); });
+                                          [this] { m_transfer->download(window().editor()); });
     download->setStatusTip(tr("Write the current editor's program to the PMC-960's program buffer, verified by "
                               "the communications checksum"));
     QAction* upload = m_menu->addAction(tr("&Upload Program"), QKeySequence(Qt::SHIFT | Qt::Key_F6), m_transfer,
@@ -55,7 +50,7 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
     m_menu->addAction(m_parameters->toggleViewAction());
     m_menu->addAction(tr("&Watch Variables..."), this, &Pmc960Workspace::watchVariables)
         ->setStatusTip(tr("A rolling chart of position, following error, velocity and distance to go"));
-    m_menu->addAction(m_tuning.action); // §4.8's procedure: gains, a test index, the tach on the bench's scope
+    m_menu->addAction(tuning().action); // §4.8's procedure: gains, a test index, the tach on the bench's scope
 
     connect(m_runner, &Pmc960RoutineRunner::programFailed, m_errors, &Pmc960ErrorSource::addProgramError);
     connect(m_transfer, &Pmc960ProgramTransfer::busyChanged, this, [this](bool busy) {
@@ -70,14 +65,13 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& window)
 Pmc960Workspace::~Pmc960Workspace() {
     // The docks belong to the window and may outlive the session: let go of it first.
     blockSignals(true); // the window is going: no status updates from the link closing
-    if (m_link) m_link->disconnect(this);
     if (m_session) {
         m_session->disconnect(this);
         m_session->disconnect(m_runner);
     }
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
-    if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
+    releaseLink();
 }
 
 Pmc960RunDialog* Pmc960Workspace::runRoutine() {
@@ -88,19 +82,12 @@ QString Pmc960Workspace::busyReason() const {
     return m_transfer->isBusy() ? tr("the program buffer is being transferred") : QString();
 }
 
-WatchView* Pmc960Workspace::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(*this), &m_window);
-    m_watch->show();
-    m_watch->raise();
-    return m_watch;
-}
-
 QList<QMenu*> Pmc960Workspace::menus() const {
     return {m_menu};
 }
 
 QList<QDockWidget*> Pmc960Workspace::docks() const {
-    return {m_status, m_parameters, m_tuning.dock};
+    return {m_status, m_parameters, tuning().dock};
 }
 
 QAction* Pmc960Workspace::action(const QString& text) const {
@@ -112,25 +99,8 @@ QAction* Pmc960Workspace::action(const QString& text) const {
     return nullptr;
 }
 
-void Pmc960Workspace::activate(const ConnectionChoice& choice) {
-    deactivate();
-    m_link = choice.makeLink();
-    m_linkText = m_link->description();
-    m_drive = std::make_unique<serialport::Pmc960DriveSession>(*m_link);
-    m_session = &m_drive->pmc960();
-    connect(m_link.get(), &serialport::Link::opened, this, &Pmc960Workspace::onOpened);
-    connect(m_link.get(), &serialport::Link::errorOccurred, this, &Pmc960Workspace::onLinkError);
-    connect(m_link.get(), &serialport::Link::closed, this, [this] {
-        if (!m_connected) return;
-        m_connected = false;
-        m_status->setSession(nullptr);
-        m_parameters->setSession(nullptr);
-        if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
-        m_runner->reset();
-        updateActions();
-        emit statusChanged();
-    });
-    m_reconnector.watch(m_link.get()); // after the handler above: lost is said once the state shows it
+void Pmc960Workspace::sessionCreated(serialport::DriveSession& session) {
+    m_session = &static_cast<serialport::Pmc960DriveSession&>(session).pmc960();
     connect(m_session, &serialport::Pmc960Session::stateChanged, this, &Pmc960Workspace::statusChanged);
     connect(m_session, &serialport::Pmc960Session::shownReceived, this, &Pmc960Workspace::terminalReceived);
     connect(m_session, &serialport::Pmc960Session::shownReceived, m_runner, &Pmc960RoutineRunner::onShown);
@@ -138,12 +108,10 @@ void Pmc960Workspace::activate(const ConnectionChoice& choice) {
         if (m_runner->explainRefusal(code)) return; // said with what to do about the routine
         emit message(tr("PMC-960: %1").arg(Pmc960ProgramTransfer::describeError(code)));
     });
-    m_link->open();
-    if (m_link->isOpen() && !m_connected) onOpened();
 }
 
 bool Pmc960Workspace::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
-    if (!m_connected) {
+    if (!isConnected()) {
         emit message(tr("The PMC-960 is not connected (Drive > Connect): nothing was sent."));
         return true;
     }
@@ -156,51 +124,26 @@ bool Pmc960Workspace::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
     return true;
 }
 
-void Pmc960Workspace::onOpened() {
-    if (m_connected) return;
+void Pmc960Workspace::sessionOpened() {
     // (After a lost connection too: the session asks for the prompt again, the docks poll again.)
-    m_connected = true;
     m_status->setSession(m_session);
     m_parameters->setSession(m_session);
-    if (m_tuning.panel) m_tuning.panel->attach(m_drive.get(), m_link.get());
-    updateActions();
-    emit statusChanged();
-    emit message(tr("Connected to %1").arg(m_linkText));
     // The first connection shows the status panel, so the user sees the controller at once.
     if (!m_status->isVisible()) m_status->show();
 }
 
-void Pmc960Workspace::onLinkError(const QString& text) {
-    emit message(tr("PMC-960 link: %1").arg(text));
-    if (m_link && !m_link->isOpen() && m_connected) {
-        m_connected = false;
-        m_status->setSession(nullptr);
-        m_parameters->setSession(nullptr);
-        m_runner->reset();
-        updateActions();
-        emit statusChanged();
-    }
-}
-
-void Pmc960Workspace::deactivate() {
-    m_reconnector.watch(nullptr); // closed on purpose: not lost
-    const bool was = m_connected || m_link;
-    m_connected = false;
+void Pmc960Workspace::sessionClosed() {
     m_status->setSession(nullptr);
     m_parameters->setSession(nullptr);
-    if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
     m_runner->reset();
+}
+
+void Pmc960Workspace::sessionEnding() {
+    sessionClosed();
     m_transfer->forgetProgram(); // another connection may reach another controller
-    if (m_session) m_session->disconnect(this);
-    if (m_link) {
-        m_link->disconnect(this);
-        m_link->close();
-    }
+    m_session->disconnect(this);
+    m_session->disconnect(m_runner);
     m_session = nullptr;
-    m_drive.reset();
-    m_link.reset();
-    updateActions();
-    if (was) emit statusChanged();
 }
 
 ErrorSource* Pmc960Workspace::errorSource() const {
@@ -211,14 +154,10 @@ QString Pmc960Workspace::sampleProgram() const {
     return resources::kPmc960SampleProgram;
 }
 
-bool Pmc960Workspace::isConnected() const {
-    return m_connected;
-}
-
 QString Pmc960Workspace::statusText() const {
-    if (!m_link) return tr("PMC-960: not connected");
-    if (isReconnecting()) return tr("PMC-960 on %1: connection lost, reconnecting\u2026").arg(m_linkText);
-    if (!m_connected) return tr("PMC-960 on %1: connecting\u2026").arg(m_linkText);
+    if (!hasLink()) return tr("PMC-960: not connected");
+    if (isReconnecting()) return tr("PMC-960 on %1: connection lost, reconnecting\u2026").arg(linkText());
+    if (!isConnected()) return tr("PMC-960 on %1: connecting\u2026").arg(linkText());
     using State = serialport::Pmc960Session::State;
     QString state;
     switch (m_session->state()) {
@@ -227,11 +166,11 @@ QString Pmc960Workspace::statusText() const {
     case State::Ready: state = tr("Ready"); break;
     case State::Busy: state = tr("Busy"); break;
     }
-    return tr("PMC-960 axis %1 on %2, %3").arg(QChar(m_session->axisId())).arg(m_linkText, state);
+    return tr("PMC-960 axis %1 on %2, %3").arg(QChar(m_session->axisId())).arg(linkText(), state);
 }
 
 void Pmc960Workspace::stop() {
-    if (!m_connected) return;
+    if (!isConnected()) return;
     if (m_transfer->isBusy() && m_transfer->progressDialog()) {
         // ESC goes out now; the download leaves the editor and protects the buffer. (QProgressDialog::cancel()
         // would only hide the dialog: it does not emit canceled().)
@@ -241,16 +180,16 @@ void Pmc960Workspace::stop() {
     }
     m_session->cancelPending();
     m_runner->reset(); // the prompt after ESC ends no routine of ours
-    m_link->write(QByteArray(1, kEsc));
+    link()->write(QByteArray(1, kEsc));
     emit message(tr("Stop: ESC sent to the PMC-960"));
 }
 
 void Pmc960Workspace::updateActions() {
-    const bool ready = m_connected && !m_transfer->isBusy();
+    const bool ready = isConnected() && !m_transfer->isBusy();
     for (const QString& text :
          {QStringLiteral("Download Program"), QStringLiteral("Upload Program"), QStringLiteral("Run Routine")})
         if (QAction* a = action(text)) a->setEnabled(ready);
-    if (QAction* a = action(QStringLiteral("Stop"))) a->setEnabled(m_connected);
+    if (QAction* a = action(QStringLiteral("Stop"))) a->setEnabled(isConnected());
 }
 
 } // namespace app

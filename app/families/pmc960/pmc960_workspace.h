@@ -4,15 +4,9 @@
 // MPL editing itself (.mpl tabs) is MplLanguage's. GUI thread only.
 #pragma once
 
-#include "family_workspace.h"
-#include "link_reconnector.h"
-#include "tuning/family_tuning_dock.h"
+#include "session_workspace.h"
 
-#include "serialport/pmc960_drive_session.h"
-
-#include <QPointer>
-
-#include <memory>
+#include "serialport/pmc960_session.h"
 
 class QAction;
 
@@ -27,18 +21,14 @@ class Pmc960RunDialog;
 class Pmc960StatusDock;
 class WatchView;
 
-class Pmc960Workspace final : public FamilyWorkspace {
+class Pmc960Workspace final : public SessionWorkspace {
     Q_OBJECT
 public:
     explicit Pmc960Workspace(MainWindow& window);
     ~Pmc960Workspace() override;
 
-    drive_core::DriveFamily family() const override { return drive_core::DriveFamily::Pmc960; }
     QList<QMenu*> menus() const override;
     QList<QDockWidget*> docks() const override;
-    void activate(const ConnectionChoice& choice) override;
-    void deactivate() override;
-    bool isConnected() const override;
     QString statusText() const override;
     ErrorSource* errorSource() const override;
     QString sampleProgram() const override; // hello.mpl
@@ -47,13 +37,7 @@ public:
     bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 
     // The session while the link is open, else nullptr.
-    serialport::Pmc960Session* session() const { return m_connected ? m_session : nullptr; }
-    serialport::DriveSession* driveSession() const override { return m_connected ? m_drive.get() : nullptr; }
-    // The link while connected (the simulator's bench for the tour and tests), else nullptr.
-    serialport::Link* link() const override { return m_connected ? m_link.get() : nullptr; }
-    // The link closed by itself and is reopened every second (LinkReconnector) until the device is back.
-    bool isReconnecting() const { return m_reconnector.isReconnecting(); }
-    MainWindow& window() const { return m_window; }
+    serialport::Pmc960Session* session() const { return isConnected() ? m_session : nullptr; }
     Pmc960ProgramTransfer& transfer() const { return *m_transfer; }
     Pmc960RoutineRunner& runner() const { return *m_runner; }
     Pmc960StatusDock* statusDock() const { return m_status; }
@@ -68,33 +52,25 @@ public:
     // Run Routine: the labels of the editor's program to choose from; the choice is typed as B<label> (SM2
     // first if asked). Returns the dialog (open, not blocking), nullptr while disconnected.
     Pmc960RunDialog* runRoutine();
-    // Watch Variables: the scope's polled rolling chart of this family's values (one window, reused).
-    WatchView* watchVariables();
 
 signals:
     // A transfer started or ended: docks leave the line alone while the program buffer is written.
     void busyChanged(bool busy);
 
 private:
-    void onOpened();
-    void onLinkError(const QString& text);
-    void updateActions();
+    void sessionCreated(serialport::DriveSession& session) override;
+    void sessionOpened() override;
+    void sessionClosed() override;
+    void sessionEnding() override;
+    void updateActions() override;
 
-    MainWindow& m_window;
-    std::unique_ptr<serialport::Link> m_link;
-    std::unique_ptr<serialport::Pmc960DriveSession> m_drive; // the family-neutral contract over m_session
-    serialport::Pmc960Session* m_session = nullptr;
+    serialport::Pmc960Session* m_session = nullptr; // the family's own session inside the DriveSession
     Pmc960ProgramTransfer* m_transfer;
     Pmc960StatusDock* m_status;
     Pmc960ParameterDock* m_parameters;
     QMenu* m_menu;
     Pmc960ErrorSource* m_errors;
     Pmc960RoutineRunner* m_runner;
-    QPointer<WatchView> m_watch;
-    FamilyTuningDock m_tuning;
-    QString m_linkText;
-    bool m_connected = false;
-    LinkReconnector m_reconnector;
 };
 
 } // namespace app

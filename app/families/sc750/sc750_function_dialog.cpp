@@ -2,6 +2,7 @@
 #include "sc750_function_dialog.h"
 
 #include "sc750_workspace.h"
+#include "theme.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 
@@ -91,8 +92,10 @@ void Sc750FunctionDialog::rebuildFields() {
                 if (self) self->setStatus(tr("%1: %2").arg(name, why), true);
             });
     }
-    if (m_fields.isEmpty()) setStatus(tr("%1 uses no variables.").arg(m_function->currentText()), false);
-    else setStatus(QString(), false);
+    if (m_fields.isEmpty())
+        setStatus(tr("%1 uses no variables.").arg(m_function->currentText()), false);
+    else
+        setStatus(QString(), false);
 }
 
 void Sc750FunctionDialog::call() {
@@ -124,8 +127,7 @@ QString Sc750FunctionDialog::status() const {
 }
 
 void Sc750FunctionDialog::setStatus(const QString& text, bool error) {
-    m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+    Theme::showStatus(*m_status, text, error);
 }
 
 } // namespace app

@@ -3,6 +3,7 @@
 
 #include "sc750_setup_data_table.h"
 #include "sc750_workspace.h"
+#include "theme.h"
 
 #include "main_window.h"
 
@@ -209,8 +210,7 @@ QString Sc750SetupDialog::status() const {
 }
 
 void Sc750SetupDialog::setStatus(const QString& text, bool error) {
-    m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+    Theme::showStatus(*m_status, text, error);
 }
 
 } // namespace app

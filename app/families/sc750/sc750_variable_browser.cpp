@@ -4,6 +4,7 @@
 #include "sc750_debugger.h"
 #include "sc750_variable_groups.h"
 #include "sc750_workspace.h"
+#include "theme.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 #include "serialport/sc750_session.h"
@@ -22,7 +23,7 @@ namespace app {
 namespace catalog = drive_core::catalog::sc750;
 
 namespace {
-constexpr int kInfoRole = Qt::UserRole + 1;   // the row's catalog index
+constexpr int kInfoRole = Qt::UserRole + 1;    // the row's catalog index
 constexpr int kChangedRole = Qt::UserRole + 2; // the value differs from the read before
 const QColor kChanged(0xff, 0xf4, 0xce);
 
@@ -81,20 +82,24 @@ Sc750VariableBrowser::Sc750VariableBrowser(Sc750Workspace& workspace, QWidget* p
     const auto all = catalog::variables();
     for (std::size_t i = 0; i < all.size(); ++i) {
         const catalog::VariableInfo& v = all[i];
-        auto* item = new QTreeWidgetItem(groups.value(sc750VariableGroup(v)),
-                                         {text(v.name), QString(), text(v.units), sc750RangeText(v), accessText(v.access),
-                                          text(v.description)});
+        auto* item = new QTreeWidgetItem(
+            groups.value(sc750VariableGroup(v)),
+            {text(v.name), QString(), text(v.units), sc750RangeText(v), accessText(v.access), text(v.description)});
         item->setData(NameColumn, kInfoRole, int(i));
         item->setTextAlignment(ValueColumn, Qt::AlignRight | Qt::AlignVCenter);
-        item->setToolTip(DescriptionColumn, tr("%1 (%2)%3").arg(text(v.description), text(v.manualLines),
-                                                                 v.chosen ? tr("; range chosen: the manual gives none") : QString()));
+        item->setToolTip(DescriptionColumn,
+                         tr("%1 (%2)%3")
+                             .arg(text(v.description), text(v.manualLines),
+                                  v.chosen ? tr("; range chosen: the manual gives none") : QString()));
         if (v.access != catalog::Access::ReadOnly) item->setFlags(item->flags() | Qt::ItemIsEditable);
         m_items.insert(text(v.name), item);
     }
     m_filling = false;
     for (QTreeWidgetItem* group : groups) {
-        if (group->childCount() == 0) delete group; // "Other" when every variable has its group
-        else group->setExpanded(true);
+        if (group->childCount() == 0)
+            delete group; // "Other" when every variable has its group
+        else
+            group->setExpanded(true);
     }
     m_tree->header()->setSectionResizeMode(QHeaderView::Interactive);
     m_tree->header()->setStretchLastSection(true);
@@ -235,7 +240,8 @@ bool Sc750VariableBrowser::writeValue(const QString& name, const QString& typed)
         },
         [this, item, upper, value](const QString& why) {
             const bool refused = !why.isEmpty() && why.at(0).isDigit();
-            showMessage(tr("The SC750 refused %1 = %2: %3").arg(upper, value, refused ? QLatin1Char('!') + why : why), true);
+            showMessage(tr("The SC750 refused %1 = %2: %3").arg(upper, value, refused ? QLatin1Char('!') + why : why),
+                        true);
             read(item); // the row shows what the controller still holds
             emit written(upper, false);
         });
@@ -255,8 +261,7 @@ void Sc750VariableBrowser::showContextMenu(const QPoint& at) {
 }
 
 void Sc750VariableBrowser::showMessage(const QString& text, bool error) {
-    m_message->setText(text);
-    m_message->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+    Theme::showStatus(*m_message, text, error);
 }
 
 } // namespace app

@@ -4,6 +4,7 @@
 #include "sc750_debugger.h"
 #include "sc750_variable_browser.h"
 #include "sc750_workspace.h"
+#include "theme.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 
@@ -181,8 +182,7 @@ QString Sc750VariablesDock::lastMessage() const {
 }
 
 void Sc750VariablesDock::showMessage(const QString& text, bool error) {
-    m_message->setText(text);
-    m_message->setStyleSheet(error ? QStringLiteral("color: #b3261e;") : QString());
+    Theme::showStatus(*m_message, text, error);
 }
 
 } // namespace app

@@ -16,6 +16,7 @@
 #include "editor_tabs.h"
 #include "file_types.h"
 #include "main_window.h"
+#include "serialport/sc750_drive_session.h"
 #include "scope/session_watch_source.h"
 #include "scope/watch_view.h"
 #include "terminal_dock.h"
@@ -32,21 +33,20 @@
 
 namespace app {
 
-Sc750Workspace::Sc750Workspace(MainWindow& window)
-    : FamilyWorkspace(&window), m_window(window), m_debugger(new Sc750Debugger(*this)),
-      m_output(new Sc750OutputDock(&window)), m_variables(new Sc750VariablesDock(*this, &window)),
-      m_tuning(makeFamilyTuningDock(window, family())) {
+Sc750Workspace::Sc750Workspace(MainWindow& mainWindow)
+    : SessionWorkspace(mainWindow, drive_core::DriveFamily::Sc750), m_debugger(new Sc750Debugger(*this)),
+      m_output(new Sc750OutputDock(&mainWindow)), m_variables(new Sc750VariablesDock(*this, &mainWindow)) {
     createMenus();
     m_errors = new Sc750ErrorSource(*this);
-    m_cursorLabel = new QLabel(&window);
+    m_cursorLabel = new QLabel(&mainWindow);
     m_cursorLabel->setObjectName(QStringLiteral("sc750CursorLabel"));
     m_cursorLabel->setToolTip(tr("Motion Dialogue's status line: the axis and the cursor's line and column"));
     m_cursorLabel->setContentsMargins(6, 0, 6, 0);
     m_cursorLabel->hide();
-    m_display = new Sc750StatusDisplay(*this, &window);
+    m_display = new Sc750StatusDisplay(*this, &mainWindow);
     m_display->hide();
-    window.statusBar()->addPermanentWidget(m_display);
-    window.statusBar()->addPermanentWidget(m_cursorLabel);
+    mainWindow.statusBar()->addPermanentWidget(m_display);
+    mainWindow.statusBar()->addPermanentWidget(m_cursorLabel);
 
     connect(m_debugger, &Sc750Debugger::message, this, &FamilyWorkspace::message);
     connect(m_debugger, &Sc750Debugger::stateChanged, this, [this] {
@@ -63,34 +63,33 @@ Sc750Workspace::Sc750Workspace(MainWindow& window)
         if (m_debugger->state() == Sc750Debugger::State::Running) m_debugger->stop();
     });
     connect(m_output, &Sc750OutputDock::inputTyped, this, [this](const QByteArray& bytes) {
-        if (m_connected) m_session->sendProgramInput(bytes);
+        if (isConnected()) m_session->sendProgramInput(bytes);
     });
-    connect(&window, &MainWindow::familyChanged, this, [this](drive_core::DriveFamily family) {
+    connect(&mainWindow, &MainWindow::familyChanged, this, [this](drive_core::DriveFamily family) {
         m_shown = family == drive_core::DriveFamily::Sc750;
         if (m_shown && !m_placed) {
             // Motion Dialogue's output window sits under the editor, with the terminal.
             m_placed = true;
-            m_window.addDockWidget(Qt::BottomDockWidgetArea, m_output);
-            m_window.tabifyDockWidget(m_window.terminalDock(), m_output);
+            window().addDockWidget(Qt::BottomDockWidgetArea, m_output);
+            window().tabifyDockWidget(window().terminalDock(), m_output);
             m_output->hide();
         }
         m_cursorLabel->setVisible(m_shown);
         m_display->setVisible(m_shown);
         updateActions();
-        followEditor(m_window.editor());
+        followEditor(window().editor());
     });
-    connect(&window, &MainWindow::currentEditorChanged, this, &Sc750Workspace::followEditor);
-    connect(window.editorArea(), &EditorArea::currentDocumentChanged, this,
-            [this] { followEditor(m_window.editor()); });
+    connect(&mainWindow, &MainWindow::currentEditorChanged, this, &Sc750Workspace::followEditor);
+    connect(mainWindow.editorArea(), &EditorArea::currentDocumentChanged, this,
+            [this] { followEditor(window().editor()); });
     updateActions();
 }
 
 Sc750Workspace::~Sc750Workspace() {
     // The window's widgets are going: nothing from the closing link may reach them.
-    if (m_link) m_link->disconnect(this);
+    if (m_session) m_session->disconnect(this);
     m_session = nullptr;
-    m_drive.reset(); // it keeps a reference to the link
-    m_link.reset();
+    releaseLink();
 }
 
 QList<QMenu*> Sc750Workspace::menus() const {
@@ -98,11 +97,11 @@ QList<QMenu*> Sc750Workspace::menus() const {
 }
 
 QList<QDockWidget*> Sc750Workspace::docks() const {
-    return {m_output, m_variables, m_tuning.dock};
+    return {m_output, m_variables, tuning().dock};
 }
 
 void Sc750Workspace::createMenus() {
-    m_compileMenu = new QMenu(tr("&Compile"), &m_window);
+    m_compileMenu = new QMenu(tr("&Compile"), &window());
     m_compileMenu->setObjectName(QStringLiteral("sc750CompileMenu"));
     QMenu* menu = m_compileMenu;
     menu->addAction(tr("&Compile Program"), QKeySequence(tr("Ctrl+F9")), m_debugger, &Sc750Debugger::compile);
@@ -134,19 +133,12 @@ void Sc750Workspace::createMenus() {
     menu->addAction(tr("Real &Time Function Call..."), this, &Sc750Workspace::showFunctionCall);
     menu->addAction(tr("&Watch Variables..."), this, &Sc750Workspace::watchVariables)
         ->setStatusTip(tr("A rolling chart of POSITION, VELOCITY, POS.ERROR... read while the program runs"));
-    menu->addAction(m_tuning.action); // the gains, a test move and DACMON on the bench's oscilloscope
-    m_optionsMenu = new Sc750ControllerMenu(*this, &m_window);
+    menu->addAction(tuning().action); // the gains, a test move and DACMON on the bench's oscilloscope
+    m_optionsMenu = new Sc750ControllerMenu(*this, &window());
 }
 
 QString Sc750Workspace::busyReason() const {
     return m_debugger->state() == Sc750Debugger::State::Downloading ? tr("a download is under way") : QString();
-}
-
-WatchView* Sc750Workspace::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(*this), &m_window);
-    m_watch->show();
-    m_watch->raise();
-    return m_watch;
 }
 
 QAction* Sc750Workspace::action(const QString& text) const {
@@ -161,18 +153,14 @@ QAction* Sc750Workspace::action(const QString& text) const {
 }
 
 QWidget* Sc750Workspace::showFunctionCall() {
-    auto* dialog = new Sc750FunctionDialog(*this, &m_window);
+    auto* dialog = new Sc750FunctionDialog(*this, &window());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
     return dialog;
 }
 
-void Sc750Workspace::activate(const ConnectionChoice& choice) {
-    deactivate();
-    m_link = choice.makeLink();
-    m_drive = std::make_unique<serialport::Sc750DriveSession>(*m_link);
-    m_session = &m_drive->sc750();
-    m_linkText = m_link->description();
+void Sc750Workspace::sessionCreated(serialport::DriveSession& session) {
+    m_session = &static_cast<serialport::Sc750DriveSession&>(session).sc750();
     connect(m_session, &serialport::Sc750Session::finished, this,
             [this](quint64 id, const serialport::Sc750Reply& reply) {
                 const auto handlers = m_waiting.take(id);
@@ -184,66 +172,30 @@ void Sc750Workspace::activate(const ConnectionChoice& choice) {
         else emit message(tr("SC750: %1").arg(why));
     });
     connect(m_session, &serialport::Sc750Session::programOutput, m_output, &Sc750OutputDock::display);
-    connect(m_link.get(), &serialport::Link::opened, this, &Sc750Workspace::onOpened);
-    connect(m_link.get(), &serialport::Link::errorOccurred, this, &Sc750Workspace::onLinkError);
-    connect(m_link.get(), &serialport::Link::closed, this, [this] {
-        m_connected = false;
-        if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
-        updateActions();
-        emit statusChanged();
-    });
-    m_reconnector.watch(m_link.get()); // after the handler above: lost is said once the state shows it
-    m_link->open();
-    emit statusChanged();
 }
 
-void Sc750Workspace::onOpened() {
-    m_connected = true;
+void Sc750Workspace::sessionOpened() {
     m_debugger->attachSession();
-    if (m_tuning.panel) m_tuning.panel->attach(m_drive.get(), m_link.get());
     if (m_axis != 255) m_session->logOn(m_axis);
     send('V', {}, [this](const serialport::Sc750Reply& reply) {
         const QStringList parts = reply.payload.split(QLatin1Char(','));
-        if (parts.size() >= 2) m_linkText = tr("SC%1, firmware %2").arg(parts[0], parts[1]);
+        if (parts.size() >= 2) setLinkText(tr("SC%1, firmware %2").arg(parts[0], parts[1]));
         m_display->setModel(parts.value(0));
         emit statusChanged();
     });
     send('?', {}, [this](const serialport::Sc750Reply& reply) { m_debugger->adoptDriveStatus(reply.payload); });
-    updateActions();
-    emit statusChanged();
-    emit message(tr("Connected to %1").arg(m_link->description()));
 }
 
-void Sc750Workspace::onLinkError(const QString& text) {
-    emit message(text);
-    if (m_link && !m_link->isOpen() && m_connected) {
-        m_connected = false;
-        updateActions();
-    }
-    emit statusChanged();
-}
-
-void Sc750Workspace::deactivate() {
-    m_reconnector.watch(nullptr); // closed on purpose: not lost
-    if (!m_link) return;
+void Sc750Workspace::sessionEnding() {
     m_waiting.clear();
-    const bool wasConnected = m_connected;
-    m_connected = false;
-    if (m_tuning.panel) m_tuning.panel->attach(nullptr, nullptr);
+    m_session->disconnect(this);
     m_session = nullptr;
-    m_drive.reset();
-    m_link->disconnect(this);
-    m_link->close();
-    m_link.reset();
-    m_debugger->attachSession();
-    updateActions();
-    emit statusChanged();
-    if (wasConnected) emit message(tr("Disconnected from the SC750"));
+    m_debugger->attachSession(); // to none
 }
 
 void Sc750Workspace::setAxis(int axis) {
     m_axis = qBound(0, axis, 255);
-    if (m_connected && m_axis != 255) m_session->logOn(m_axis);
+    if (isConnected() && m_axis != 255) m_session->logOn(m_axis);
     showCursorStatus();
     emit statusChanged();
 }
@@ -256,21 +208,17 @@ QString Sc750Workspace::sampleProgram() const {
     return resources::kSc750SampleProgram;
 }
 
-bool Sc750Workspace::isConnected() const {
-    return m_connected;
-}
-
 QString Sc750Workspace::statusText() const {
     if (isReconnecting())
-        return tr("SC750 axis %1 on %2: connection lost, reconnecting\u2026").arg(m_axis).arg(m_linkText);
-    if (!m_connected) return tr("SC750 axis %1, not connected").arg(m_axis);
+        return tr("SC750 axis %1 on %2: connection lost, reconnecting\u2026").arg(m_axis).arg(linkText());
+    if (!isConnected()) return tr("SC750 axis %1, not connected").arg(m_axis);
     // The axis is in the cursor label beside it ("Axis 255 Line ..."): not said twice, so the status bar
     // keeps room for messages such as "Breakpoint at line 12".
-    return tr("%1, %2 \u2014 %3").arg(m_linkText, m_debugger->stateText(), m_link->description());
+    return tr("%1, %2 \u2014 %3").arg(linkText(), m_debugger->stateText(), link()->description());
 }
 
 bool Sc750Workspace::send(char letter, const QString& payload, Done done, Failed failed) {
-    if (!m_connected) {
+    if (!isConnected()) {
         if (failed) failed(tr("not connected"));
         else emit message(tr("Not connected to an SC750: choose Drive > Connect..."));
         return false;
@@ -282,7 +230,7 @@ bool Sc750Workspace::send(char letter, const QString& payload, Done done, Failed
 void Sc750Workspace::updateActions() {
     using State = Sc750Debugger::State;
     const State state = m_debugger->state();
-    const bool on = m_shown && m_connected;
+    const bool on = m_shown && isConnected();
     const bool idle = on && !m_debugger->running();
     for (QAction* a : m_compileMenu->actions()) a->setEnabled(on);
     action(QStringLiteral("Compile Program"))->setEnabled(m_shown);
@@ -300,7 +248,7 @@ void Sc750Workspace::updateActions() {
 
 void Sc750Workspace::followEditor(editor::ProgramEditor* editor) {
     if (!editor) return;
-    const bool basic = fileTypeOf(m_window.editorArea()->tabs()->displayName(editor)) == FileType::Sc750Program;
+    const bool basic = fileTypeOf(window().editorArea()->tabs()->displayName(editor)) == FileType::Sc750Program;
     if (basic) editor::ServoBasicLanguage::install(*editor);
     else editor::ServoBasicLanguage::uninstall(*editor);
     if (m_editor != editor) {

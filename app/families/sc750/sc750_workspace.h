@@ -4,11 +4,9 @@
 // family. GUI thread only.
 #pragma once
 
-#include "family_workspace.h"
-#include "link_reconnector.h"
-#include "tuning/family_tuning_dock.h"
+#include "session_workspace.h"
 
-#include "serialport/sc750_drive_session.h"
+#include "serialport/sc750_session.h"
 
 #include <QHash>
 #include <QPointer>
@@ -34,35 +32,26 @@ class Sc750StatusDisplay;
 class Sc750VariablesDock;
 class WatchView;
 
-class Sc750Workspace final : public FamilyWorkspace {
+class Sc750Workspace final : public SessionWorkspace {
     Q_OBJECT
 public:
     explicit Sc750Workspace(MainWindow& window);
     ~Sc750Workspace() override;
 
-    drive_core::DriveFamily family() const override { return drive_core::DriveFamily::Sc750; }
     QList<QMenu*> menus() const override;
     QList<QDockWidget*> docks() const override;
-    void activate(const ConnectionChoice& choice) override;
-    void deactivate() override;
-    bool isConnected() const override;
     QString statusText() const override;
     ErrorSource* errorSource() const override;
     QString sampleProgram() const override; // hello.bas
     QString busyReason() const override;
 
     // The session while the link is open, else nullptr.
-    serialport::Sc750Session* session() const { return m_connected ? m_session : nullptr; }
-    serialport::DriveSession* driveSession() const override { return m_connected ? m_drive.get() : nullptr; }
-    serialport::Link* link() const override { return m_connected ? m_link.get() : nullptr; }
-    // The link closed by itself and is reopened every second (LinkReconnector) until the device is back.
-    bool isReconnecting() const { return m_reconnector.isReconnecting(); }
+    serialport::Sc750Session* session() const { return isConnected() ? m_session : nullptr; }
     Sc750Debugger& debugger() const { return *m_debugger; }
     Sc750OutputDock* outputDock() const { return m_output; }
     Sc750VariablesDock* variablesDock() const { return m_variables; }
     // The front-panel status display in the status bar (shown while the SC750 is the chosen family).
     Sc750StatusDisplay* statusDisplay() const { return m_display; }
-    MainWindow& window() const { return m_window; }
     // Options > Axis Selection: 255 = RS-232 (default, L450), 0-254 multidrop.
     int axis() const { return m_axis; }
     void setAxis(int axis);
@@ -76,23 +65,19 @@ public:
 
     // Opens the Real Time Function Call dialog (non-modal) and returns it (the tour grabs it).
     QWidget* showFunctionCall();
-    // Watch Variables: the scope's polled rolling chart of this family's values (one window, reused).
-    WatchView* watchVariables();
 
 private:
     void createMenus();
     void createOptionsMenu();
-    void onOpened();
-    void onLinkError(const QString& text);
-    void updateActions();
+    void sessionCreated(serialport::DriveSession& session) override;
+    void sessionOpened() override;
+    void sessionEnding() override;
+    void updateActions() override;
     void followEditor(editor::ProgramEditor* editor);
     void showCursorStatus();
     bool eventFilter(QObject* watched, QEvent* event) override;
 
-    MainWindow& m_window;
-    std::unique_ptr<serialport::Link> m_link;
-    std::unique_ptr<serialport::Sc750DriveSession> m_drive; // the family-neutral contract over m_session
-    serialport::Sc750Session* m_session = nullptr;
+    serialport::Sc750Session* m_session = nullptr; // the family's own session inside the DriveSession
     Sc750Debugger* m_debugger;
     Sc750OutputDock* m_output;
     Sc750VariablesDock* m_variables;
@@ -103,14 +88,9 @@ private:
     Sc750StatusDisplay* m_display = nullptr;
     QPointer<editor::ProgramEditor> m_editor;
     QHash<quint64, std::pair<Done, Failed>> m_waiting;
-    QPointer<WatchView> m_watch;
-    FamilyTuningDock m_tuning;
-    QString m_linkText;
     int m_axis = 255;
-    bool m_connected = false;
     bool m_shown = false;
     bool m_placed = false; // the output dock moved under the editor on first show
-    LinkReconnector m_reconnector;
 };
 
 } // namespace app
