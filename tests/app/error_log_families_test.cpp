@@ -5,6 +5,7 @@
 // controller refuses with #xx is a row decoded from the catalog; ESTOP' asserted during a move gives the
 // asynchronous #E0, and Read Last Error reads it back from the `&` error-status buffer. The one dock
 // follows the chosen family.
+#include "family_window.h"
 #include "app/drive/terminal_widget.h"
 #include "app/errors/error_log_dock.h"
 #include "app/errors/error_log_model.h"
@@ -89,8 +90,7 @@ private slots:
     void sc750RunTimeErrorIsARowThatGoesToItsLine() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         app::ErrorLogDock& dock = *window.errorLogDock();
         dock.show();
@@ -168,8 +168,7 @@ private slots:
     void pmc960RefusalAndAsynchronousErrorAreDecoded() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
-        auto& ws = *static_cast<app::Pmc960Workspace*>(window.workspace(DriveFamily::Pmc960));
+        auto& ws = family_window::connectPmc960(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         QTRY_COMPARE_WITH_TIMEOUT(ws.session()->state(), serialport::Pmc960Session::State::Ready, kTimeoutMs);
         app::ErrorLogDock& dock = *window.errorLogDock();

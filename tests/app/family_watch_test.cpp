@@ -3,6 +3,7 @@
 // its program moves the motor, the PMC-960's position and following error with status polls during an
 // index — and plots them, labelled with the measured sample rate. A name the controller does not know
 // stops the chart with its answer.
+#include "family_window.h"
 #include "app/main_window.h"
 #include "families/pmc960/pmc960_status_dock.h"
 #include "families/pmc960/pmc960_workspace.h"
@@ -66,11 +67,9 @@ private slots:
     void sc750PositionAndVelocityWhileAProgramMoves() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
-        qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
-        window.editor()->setText(QStringLiteral("ENABLE = 1\nACCEL.RATE = 5000\nRUN.SPEED = 300\nGO.VEL\n"
+        family_window::newBasProgram(ws, QStringLiteral("ENABLE = 1\nACCEL.RATE = 5000\nRUN.SPEED = 300\nGO.VEL\n"
                                                 "Spin:\n  PAUSE.TIME = 0.1\n  PAUSE\nGOTO Spin\n"));
 
         app::WatchView* view = ws.watchVariables();
@@ -104,8 +103,7 @@ private slots:
     void sc750UnknownNameStopsWithTheControllersAnswer() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         app::WatchView* view = ws.watchVariables();
         app::VariableWatcher& watcher = view->watcher();
@@ -121,8 +119,7 @@ private slots:
     void pmc960PositionAndFollowingErrorDuringAnIndex() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
-        auto& ws = *static_cast<app::Pmc960Workspace*>(window.workspace(DriveFamily::Pmc960));
+        auto& ws = family_window::connectPmc960(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         app::Pmc960StatusDock* status = ws.statusDock();
         QTRY_VERIFY_WITH_TIMEOUT(status->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")), kTimeoutMs);

@@ -5,6 +5,7 @@
 // Stop during a download cancels it; MPL > Run Routine lists the editor's labels and runs one, enabling the
 // servo first if asked, and a refusal says the program in the drive may differ; the status panel follows a
 // running routine, and an error inside one names the failing command and its line (issue 19).
+#include "family_window.h"
 #include "app/drive/terminal_widget.h"
 #include "app/errors/error_log_dock.h"
 #include "app/errors/error_source.h"
@@ -61,10 +62,7 @@ bool menuVisible(const MainWindow& window, const QString& title) {
     return false;
 }
 
-Pmc960Workspace& connectPmc960(MainWindow& window) {
-    window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
-    return *static_cast<Pmc960Workspace*>(window.workspace(DriveFamily::Pmc960));
-}
+using family_window::connectPmc960;
 
 editor::ProgramEditor* newMplTab(MainWindow& window, const QString& name, const QString& text) {
     editor::ProgramEditor* e = window.editorArea()->tabs()->addEditor(name);

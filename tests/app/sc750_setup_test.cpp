@@ -1,6 +1,7 @@
 // Controller Set Up, Manual (seed-sc750 §2.10, L2530-L2553) against the simulated SC750: the "Controller
 // Set Up Data" screen pre-filled from the motor, the computed values following an edit of it, a bad value
 // refused, and OK writing the computed value into the program's PARAMS block and the controller.
+#include "family_window.h"
 #include "app/main_window.h"
 #include "families/sc750/sc750_controller_menu.h"
 #include "families/sc750/sc750_setup_data_table.h"
@@ -53,8 +54,7 @@ private slots:
     void manualLoadInertiaChangesKvpAndOkWritesIt() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
         menu->createProgram();

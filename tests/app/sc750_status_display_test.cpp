@@ -1,6 +1,7 @@
 // The SC750 front-panel status display in the status bar, against the simulated controller: 0 after
 // connecting and 8 once enabled, the decimal point lit while a program runs and dark after Stop, and a
 // run-time error flashing F and 4 in turn (seed-sc750 §6.1), all learnt from the controller's `?` answers.
+#include "family_window.h"
 #include "app/main_window.h"
 #include "families/sc750/sc750_controller_menu.h"
 #include "families/sc750/sc750_debugger.h"
@@ -27,13 +28,7 @@ namespace {
 constexpr int kTimeoutMs = 20000;
 constexpr int kSegmentsF = 0x71, kSegments4 = 0x66, kSegments8 = 0x7F, kSegments0 = 0x3F;
 
-Sc750Workspace& connectSc750(MainWindow& window, const QString& text = {}) {
-    window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-    auto& ws = *static_cast<Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
-    qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
-    if (!text.isEmpty()) window.editor()->setText(text);
-    return ws;
-}
+using family_window::connectSc750WithProgram;
 
 // Is the decimal point painted red? What the user sees, from the widget's pixels at its centre.
 bool decimalPointLooksLit(Sc750SevenSegment& digit) {
@@ -58,7 +53,7 @@ private slots:
     void showsZeroThenEightWhenEnabled() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window);
+        Sc750Workspace& ws = connectSc750WithProgram(window);
         Sc750StatusDisplay* display = ws.statusDisplay();
         QVERIFY(display);
         QVERIFY(window.statusBar()->isAncestorOf(display));
@@ -80,7 +75,7 @@ private slots:
         MainWindow window;
         window.show();
         Sc750Workspace& ws =
-            connectSc750(window, QStringLiteral("DIM n AS INTEGER\nTop:\n  n = n + 1\n  GOTO Top\nEND\n"));
+            connectSc750WithProgram(window, QStringLiteral("DIM n AS INTEGER\nTop:\n  n = n + 1\n  GOTO Top\nEND\n"));
         Sc750SevenSegment* digit = ws.statusDisplay()->digit();
         QTRY_COMPARE_WITH_TIMEOUT(digit->shown(), QLatin1Char('0'), kTimeoutMs);
         ws.debugger().run();
@@ -101,7 +96,7 @@ private slots:
         MainWindow window;
         window.show();
         Sc750Workspace& ws =
-            connectSc750(window, QStringLiteral("DIM a(3) AS INTEGER\nDIM i AS INTEGER\ni = 5\na(i) = 1\nEND\n"));
+            connectSc750WithProgram(window, QStringLiteral("DIM a(3) AS INTEGER\nDIM i AS INTEGER\ni = 5\na(i) = 1\nEND\n"));
         app::Sc750StatusDisplay* display = ws.statusDisplay();
         QTRY_COMPARE_WITH_TIMEOUT(display->digit()->shown(), QLatin1Char('0'), kTimeoutMs);
         ws.debugger().run();

@@ -1,6 +1,7 @@
 // The SC750's variable browser (issue 8: "the variable browser works for this family too"): every
 // predefined variable of the catalog in its group, live values read with G frames, an edit checked against
 // the catalog before a P frame goes out, the controller's refusal while a program runs, Add to Watch.
+#include "family_window.h"
 #include "app/main_window.h"
 #include "families/sc750/sc750_controller_menu.h"
 #include "families/sc750/sc750_debugger.h"
@@ -65,8 +66,7 @@ private slots:
     void liveValuesEditsAndRefusals() {
         MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         app::Sc750VariablesDock* dock = ws.variablesDock();
         dock->showAllVariables();
@@ -117,8 +117,7 @@ private slots:
         browser->setFilter(QString());
 
         // While a program runs the controller refuses writes: its own answer is shown.
-        qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
-        window.editor()->setText(QStringLiteral("Spin:\n  PAUSE.TIME = 0.1\n  PAUSE\nGOTO Spin\n"));
+        family_window::newBasProgram(ws, QStringLiteral("Spin:\n  PAUSE.TIME = 0.1\n  PAUSE\nGOTO Spin\n"));
         ws.debugger().run();
         QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), app::Sc750Debugger::State::Running, kTimeoutMs);
         dock->showAllVariables();

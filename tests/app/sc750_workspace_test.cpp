@@ -3,6 +3,7 @@
 // text reaches the Output window; a breakpoint stops it with its line marked; a variable is read and
 // changed while stopped, and the watched ones read again at every stop; Continue resumes; Ctrl C in the editor
 // stops; switching family takes the execution arrow away; ServoBASIC colours and F1 help.
+#include "family_window.h"
 #include "app/main_window.h"
 #include "families/sc750/sc750_controller_menu.h"
 #include "families/sc750/sc750_debugger.h"
@@ -58,14 +59,7 @@ bool menuVisible(const MainWindow& window, const QString& title) {
     return false;
 }
 
-// Connects to the simulated SC750 and opens a new .bas tab (Controller > Create Program) holding text.
-Sc750Workspace& connectSc750(MainWindow& window, const QString& text = {}) {
-    window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-    auto& ws = *static_cast<Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
-    qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
-    if (!text.isEmpty()) window.editor()->setText(text);
-    return ws;
-}
+using family_window::connectSc750WithProgram;
 } // namespace
 
 class Sc750WorkspaceTest : public QObject {
@@ -84,8 +78,7 @@ private slots:
         QVERIFY(window.workspace(DriveFamily::Sc750));
         QVERIFY(!menuVisible(window, QStringLiteral("&Compile")));
         QVERIFY(menuVisible(window, QStringLiteral("&Program")));
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         QVERIFY(menuVisible(window, QStringLiteral("&Compile")));
         QVERIFY(menuVisible(window, QStringLiteral("Co&ntroller")));
@@ -106,7 +99,7 @@ private slots:
     void compileErrorMarksItsLine() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM a AS INTEGER\na = 1\nGOTO Nowhere\nEND\n"));
+        Sc750Workspace& ws = connectSc750WithProgram(window, QStringLiteral("DIM a AS INTEGER\na = 1\nGOTO Nowhere\nEND\n"));
         QVERIFY(!ws.debugger().compile());
         QVERIFY2(ws.debugger().lastError().startsWith(QStringLiteral("LINE 3 ")),
                  qPrintable(ws.debugger().lastError()));
@@ -128,7 +121,7 @@ private slots:
         // 02-loop-again.bas (L1134-L1136): PRINT "All work and no play" forever.
         const QString program = example("02-loop-again.bas");
         QVERIFY(!program.isEmpty());
-        Sc750Workspace& ws = connectSc750(window, program);
+        Sc750Workspace& ws = connectSc750WithProgram(window, program);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         // A breakpoint on the PRINT line (2), set before running (L2706).
         window.editor()->setCursorPosition(1, 4);
@@ -175,7 +168,7 @@ private slots:
         // ahead of its answers, and a stop is acknowledged only after it has all gone out.)
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window, QStringLiteral("PAUSE.TIME = 0.05\nTick:\n  PRINT \"tick\"\n  PAUSE\n"
+        Sc750Workspace& ws = connectSc750WithProgram(window, QStringLiteral("PAUSE.TIME = 0.05\nTick:\n  PRINT \"tick\"\n  PAUSE\n"
                                                                  "GOTO Tick\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         ws.debugger().run();
@@ -203,7 +196,7 @@ private slots:
     void breakpointSetBeforeRunIsHit() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\nCount = Count + 1\n"
+        Sc750Workspace& ws = connectSc750WithProgram(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\nCount = Count + 1\n"
                                                                  "PRINT \"Count is\"; Count\nEND\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         ws.debugger().toggleBreakpointAt(*window.editor(), 3); // the PRINT
@@ -224,7 +217,7 @@ private slots:
     void watchedValuesAreReadAtEachBreakpoint() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 0\nAgain:\n"
+        Sc750Workspace& ws = connectSc750WithProgram(window, QStringLiteral("DIM Count AS INTEGER\nCount = 0\nAgain:\n"
                                                                  "Count = Count + 1\nPRINT \"Count is\"; Count\n"
                                                                  "GOTO Again\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
@@ -251,7 +244,7 @@ private slots:
     void switchingFamilyClearsTheExecutionArrow() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\n"
+        Sc750Workspace& ws = connectSc750WithProgram(window, QStringLiteral("DIM Count AS INTEGER\nCount = 41\n"
                                                                  "PRINT \"Count is\"; Count\nEND\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         editor::ProgramEditor* program = window.editor();
@@ -272,7 +265,7 @@ private slots:
     void controllerSetUpAndUnconfigure() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window, QStringLiteral("PRINT \"hi\"\nEND\n"));
+        Sc750Workspace& ws = connectSc750WithProgram(window, QStringLiteral("PRINT \"hi\"\nEND\n"));
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
         auto configured = [&ws] {
@@ -338,7 +331,7 @@ private slots:
     void realTimeFunctionCallTurnsTheMotor() {
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window);
+        Sc750Workspace& ws = connectSc750WithProgram(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         bool enabled = false;
         ws.send('P', QStringLiteral("ENABLE=1"), [&enabled](const serialport::Sc750Reply&) { enabled = true; });
@@ -389,7 +382,7 @@ private slots:
         window.show();
         // Longer than one 64-byte chunk, with the manual's typographic quotes (UTF-8 in the editor).
         const QString program = example("03-time-wait.bas") + QStringLiteral("\u2018 comment\n").repeated(20);
-        Sc750Workspace& ws = connectSc750(window, program);
+        Sc750Workspace& ws = connectSc750WithProgram(window, program);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
         auto* menu = qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1));
         menu->downloadSource();
@@ -415,7 +408,7 @@ private slots:
 
         MainWindow window;
         window.show();
-        Sc750Workspace& ws = connectSc750(window);
+        Sc750Workspace& ws = connectSc750WithProgram(window);
         QVERIFY(window.editor()->text().contains(QStringLiteral("PARAMS START")));
         QVERIFY(ws.debugger().compile()); // the boiler-plate compiles as it is
         auto* language = editor::ServoBasicLanguage::of(window.editor());

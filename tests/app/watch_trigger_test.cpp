@@ -3,6 +3,7 @@
 // armed; then a move (a BDS5 jog, an SC750 program, a PMC-960 index) carries the position through the level.
 // The chart shows the one frame, the trigger sample a quarter of the way in where the value crosses the level,
 // at time 0 on the chart, and Single stopped the polls. Waits on the drive's answers only.
+#include "family_window.h"
 #include "app/main_window.h"
 #include "families/pmc960/pmc960_status_dock.h"
 #include "families/pmc960/pmc960_workspace.h"
@@ -124,11 +125,9 @@ private slots:
     void sc750SingleFrameOfAProgramThroughTheLevel() {
         app::MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Sc750));
-        auto& ws = *static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750));
+        auto& ws = family_window::connectSc750(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kDriveTimeoutMs);
-        qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
-        window.editor()->setText(QStringLiteral("ENABLE = 1\nACCEL.RATE = 5000\nRUN.SPEED = 300\nGO.VEL\n"
+        family_window::newBasProgram(ws, QStringLiteral("ENABLE = 1\nACCEL.RATE = 5000\nRUN.SPEED = 300\nGO.VEL\n"
                                                 "Spin:\n  PAUSE.TIME = 0.1\n  PAUSE\nGOTO Spin\n"));
         app::WatchView* view = ws.watchVariables();
         const double level = armAbove(view, QStringLiteral("POSITION"), 50);
@@ -141,8 +140,7 @@ private slots:
     void pmc960SingleFrameOfAnIndexThroughTheLevel() {
         app::MainWindow window;
         window.show();
-        window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Pmc960));
-        auto& ws = *static_cast<app::Pmc960Workspace*>(window.workspace(DriveFamily::Pmc960));
+        auto& ws = family_window::connectPmc960(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kDriveTimeoutMs);
         app::Pmc960StatusDock* status = ws.statusDock();
         QTRY_VERIFY_WITH_TIMEOUT(status->value(QStringLiteral("mode")).startsWith(QStringLiteral("SM0")),

@@ -1,0 +1,45 @@
+// The set-up the family tests in tests/app share: the main window connected to one family's simulated drive
+// (Drive > Connect, the simulator of that family) and that family's workspace, and a new program tab. The
+// connection completes later: tests wait for ws.isConnected() themselves. Header only; GUI thread.
+#pragma once
+
+#include "app/drive/connection_choice.h"
+#include "app/main_window.h"
+#include "families/pmc960/pmc960_workspace.h"
+#include "families/sc750/sc750_controller_menu.h"
+#include "families/sc750/sc750_workspace.h"
+
+#include "editor/program_editor.h"
+
+namespace family_window {
+
+template <class Workspace>
+Workspace& connectSimulated(app::MainWindow& window, drive_core::DriveFamily family) {
+    window.connectDrive(app::ConnectionChoice::simulator(family));
+    return *static_cast<Workspace*>(window.workspace(family));
+}
+
+inline app::Sc750Workspace& connectSc750(app::MainWindow& window) {
+    return connectSimulated<app::Sc750Workspace>(window, drive_core::DriveFamily::Sc750);
+}
+
+inline app::Pmc960Workspace& connectPmc960(app::MainWindow& window) {
+    return connectSimulated<app::Pmc960Workspace>(window, drive_core::DriveFamily::Pmc960);
+}
+
+// Controller > Create Program: a new .bas tab, holding text when given.
+inline editor::ProgramEditor* newBasProgram(app::Sc750Workspace& ws, const QString& text = {}) {
+    qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->createProgram();
+    editor::ProgramEditor* program = ws.window().editor();
+    if (!text.isEmpty()) program->setText(text);
+    return program;
+}
+
+// Connects to the simulated SC750 and opens a new .bas tab holding text (empty when none is given).
+inline app::Sc750Workspace& connectSc750WithProgram(app::MainWindow& window, const QString& text = {}) {
+    app::Sc750Workspace& ws = connectSc750(window);
+    newBasProgram(ws, text);
+    return ws;
+}
+
+} // namespace family_window
