@@ -12,7 +12,11 @@ fuzz_target_names=()
 for t in "${fuzz_targets[@]}"; do fuzz_target_names+=("${t%% *}"); done
 
 # Configures the clang + ASan + UBSan build in $build and builds the named targets (all when none named).
+# One at a time: campaigns of two targets may run side by side, one a core, over the same build.
 build_fuzzers() {
+    mkdir -p "$build"
+    exec 9>"$build/.build-lock"
+    flock 9
     export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
     local launcher=()
     command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
@@ -20,4 +24,5 @@ build_fuzzers() {
         -DSERVODESK_FUZZ=ON -DSERVODESK_BUILD_TESTS=ON "${launcher[@]}" >/dev/null
     if [ $# -eq 0 ]; then set -- "${fuzz_target_names[@]}"; fi
     cmake --build "$build" -j "$(nproc)" --target "$@"
+    flock -u 9
 }
