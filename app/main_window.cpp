@@ -147,6 +147,18 @@ void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
         dock->hide();
         m_viewMenu->addAction(dock->toggleViewAction());
     }
+    if (const QList<QAction*> actions = workspace->toolBarActions(); !actions.isEmpty()) {
+        auto* bar = new QToolBar(ConnectionChoice::familyName(workspace->family()), this);
+        bar->setObjectName(ConnectionChoice::familyKey(workspace->family()) + QStringLiteral("ToolBar"));
+        bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+        for (QAction* action : actions) {
+            if (action) bar->addAction(action);
+            else bar->addSeparator();
+        }
+        addToolBar(bar);
+        bar->hide();
+        m_familyToolBars.insert(workspace, bar);
+    }
     if (ErrorSource* errors = workspace->errorSource()) m_errorLogDock->addSource(errors);
     connect(workspace, &FamilyWorkspace::statusChanged, this, &MainWindow::updateLinkStatus);
     connect(workspace, &FamilyWorkspace::message, this, &MainWindow::showLinkError);
@@ -166,6 +178,12 @@ FamilyWorkspace* MainWindow::workspace(drive_core::DriveFamily family) const {
 void MainWindow::showFamily(drive_core::DriveFamily family) {
     const bool bds5 = family == drive_core::DriveFamily::Bds5;
     for (QAction* action : m_bds5Only) action->setVisible(bds5);
+    // A toolbar whose actions are all hidden would stay as an empty strip: the BDS5's go with its actions.
+    for (QToolBar* bar : std::as_const(m_bds5ToolBars)) bar->setVisible(bds5);
+    for (auto it = m_familyToolBars.cbegin(); it != m_familyToolBars.cend(); ++it) {
+        it.value()->setVisible(it.key() == workspace(family));
+        it.value()->toggleViewAction()->setVisible(it.key() == workspace(family));
+    }
     for (FamilyWorkspace* w : m_workspaces) {
         const bool active = w == workspace(family);
         for (QMenu* menu : w->menus()) menu->menuAction()->setVisible(active);
@@ -279,6 +297,7 @@ void MainWindow::createDriveTools() {
     for (QToolBar* bar : {m_driveActions->createDriveToolBar(), m_driveActions->createDebugToolBar()}) {
         addToolBar(bar);
         m_bds5Only << bar->toggleViewAction();
+        m_bds5ToolBars << bar;
     }
     m_debugHighlighter = new DebugHighlighter(*this, this);
     m_captureLog = new CaptureLog(this);

@@ -8,11 +8,12 @@
 
 #include <optional>
 
+#include <QHash>
 #include <QMainWindow>
 
-class QMenu;
-
 class QLabel;
+class QMenu;
+class QToolBar;
 
 namespace editor {
 class DiagnosticsStatus;
@@ -144,6 +145,8 @@ private:
     QMenu* m_driveMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QList<QAction*> m_bds5Only; // menus, toolbars and Drive-menu actions that act on the BDS5 session
+    QList<QToolBar*> m_bds5ToolBars;                     // Drive and Debug: shown with the BDS5 only
+    QHash<FamilyWorkspace*, QToolBar*> m_familyToolBars; // a workspace's own, shown with its family
     QList<FamilyWorkspace*> m_workspaces;
     drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
     std::optional<drive_core::DriveFamily> m_terminalHintShown; // "has no terminal" said for this family

@@ -14,6 +14,7 @@
 #include <QList>
 #include <QObject>
 
+class QAction;
 class QDockWidget;
 class QMenu;
 
@@ -35,6 +36,9 @@ public:
     // Menus placed before the Drive menu, and docks, both visible only while the workspace is active.
     virtual QList<QMenu*> menus() const = 0;
     virtual QList<QDockWidget*> docks() const = 0;
+    // The family's Run, Stop and such for its own toolbar (the main window makes it, shown with the family),
+    // in the order shown; nullptr puts a separator. Empty: no toolbar.
+    virtual QList<QAction*> toolBarActions() const { return {}; }
     // Connect to the choice's port (or the family's simulated drive); called again to reconnect.
     virtual void activate(const ConnectionChoice& choice) = 0;
     // Close the link; the editors keep their contents.

@@ -11,6 +11,9 @@
 
 #include "editor/program_editor.h"
 
+#include <QToolBar>
+#include <QToolButton>
+
 namespace family_window {
 
 template <class Workspace>
@@ -40,6 +43,19 @@ inline app::Sc750Workspace& connectSc750WithProgram(app::MainWindow& window, con
     app::Sc750Workspace& ws = connectSc750(window);
     newBasProgram(ws, text);
     return ws;
+}
+
+// The buttons of the toolbars the window shows, in order, as their text reads ("Run Program", "Stop").
+inline QStringList toolBarButtons(const app::MainWindow& window) {
+    QStringList texts;
+    for (const QToolBar* bar : window.findChildren<QToolBar*>()) {
+        if (!bar->isVisible()) continue;
+        for (QAction* action : bar->actions())
+            if (const auto* button = qobject_cast<QToolButton*>(bar->widgetForAction(action));
+                button && button->isVisible())
+                texts << button->text();
+    }
+    return texts;
 }
 
 } // namespace family_window

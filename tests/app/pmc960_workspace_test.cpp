@@ -118,10 +118,17 @@ private slots:
         QVERIFY(!menuVisible(window, QStringLiteral("&Program")));
         QTRY_VERIFY_WITH_TIMEOUT(ws.statusText().contains(QStringLiteral("Ready")), kTimeoutMs);
         QVERIFY(ws.statusDock()->isVisible());
+        // MPL's own toolbar, in place of the BDS5's.
+        const QStringList mplButtons{QStringLiteral("Download Program"), QStringLiteral("Run Routine"),
+                                     QStringLiteral("Stop")};
+        QCOMPARE(family_window::toolBarButtons(window), mplButtons);
+        QVERIFY(ws.action(QStringLiteral("Run Routine"))->isEnabled());
         window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Bds5));
         QVERIFY(!ws.isConnected());
         QVERIFY(!menuVisible(window, QStringLiteral("&MPL")));
         QVERIFY(!ws.statusDock()->isVisible());
+        QVERIFY(family_window::toolBarButtons(window).contains(QStringLiteral("Run Label")));
+        QVERIFY(!family_window::toolBarButtons(window).contains(QStringLiteral("Run Routine")));
     }
 
     void downloadIsVerifiedAndUploadsTheSame() {

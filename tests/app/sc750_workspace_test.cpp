@@ -89,11 +89,20 @@ private slots:
         QCOMPARE(ws.action(QStringLiteral("Output Window"))->shortcut(), QKeySequence(Qt::Key_F4));
         QCOMPARE(ws.action(QStringLiteral("Set Breakpoint"))->shortcut(), QKeySequence(Qt::Key_F9));
         QTRY_VERIFY_WITH_TIMEOUT(ws.statusText().contains(QStringLiteral("SC752")), kTimeoutMs);
+        // The toolbar is Motion Dialogue's: the BDS5's Run Label and Kill are gone, not left as empty strips.
+        const QStringList sc750Buttons{QStringLiteral("Compile Program"), QStringLiteral("Run Program"),
+                                       QStringLiteral("Stop"), QStringLiteral("Continue Program"),
+                                       QStringLiteral("Set Breakpoint")};
+        QCOMPARE(family_window::toolBarButtons(window), sc750Buttons);
+        QVERIFY(ws.action(QStringLiteral("Run Program"))->isEnabled());
         // Back to the BDS5: the Program menu returns, ours go.
         window.connectDrive(app::ConnectionChoice::simulator(DriveFamily::Bds5));
         QVERIFY(!ws.isConnected());
         QVERIFY(!menuVisible(window, QStringLiteral("&Compile")));
         QVERIFY(menuVisible(window, QStringLiteral("&Program")));
+        const QStringList bds5Buttons = family_window::toolBarButtons(window);
+        QVERIFY2(bds5Buttons.contains(QStringLiteral("Run Label")), qPrintable(bds5Buttons.join(QLatin1Char(','))));
+        QVERIFY(!bds5Buttons.contains(QStringLiteral("Compile Program")));
     }
 
     void compileErrorMarksItsLine() {

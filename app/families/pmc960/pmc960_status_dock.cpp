@@ -9,6 +9,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPainter>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
 
 namespace app {
@@ -42,6 +44,17 @@ private:
 };
 
 namespace {
+// Asks for the whole panel (so the window gives it its height when it can) but may be squeezed: then it
+// scrolls.
+class PanelScroll final : public QScrollArea {
+public:
+    using QScrollArea::QScrollArea;
+    QSize sizeHint() const override {
+        return widget() ? widget()->sizeHint() + QSize(verticalScrollBar()->sizeHint().width(), 0)
+                        : QScrollArea::sizeHint();
+    }
+};
+
 const char* const kPollLetters = "gfvisb";
 
 QLabel* valueLabel(QWidget* parent) {
@@ -118,7 +131,15 @@ Pmc960StatusDock::Pmc960StatusDock(QWidget* parent) : QDockWidget(tr("PMC-960 St
     layout->addWidget(m_command);
     layout->addWidget(m_reply);
     layout->addStretch(1);
-    setWidget(body);
+    // Scrolled rather than squeezed: on a 768-pixel screen the panel shares its column with the Outline, and
+    // its whole height would push the window past the screen.
+    auto* scroll = new PanelScroll(this);
+    scroll->setWidget(body);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(body->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    setWidget(scroll);
     connect(m_command, &QLineEdit::returnPressed, this, [this] {
         sendCommand(m_command->text());
         m_command->clear();

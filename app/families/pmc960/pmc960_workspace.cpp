@@ -17,6 +17,7 @@
 
 #include <QMenu>
 #include <QProgressDialog>
+#include <QStyle>
 
 namespace app {
 
@@ -45,6 +46,8 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& mainWindow)
     m_menu->addSeparator();
     QAction* stopAction = m_menu->addAction(tr("&Stop"), QKeySequence(tr("Ctrl+Alt+X")), this, &Pmc960Workspace::stop);
     stopAction->setStatusTip(tr("Send ESC: abort the running program, wait or half-typed command"));
+    runRoutine->setIcon(mainWindow.style()->standardIcon(QStyle::SP_MediaPlay));
+    stopAction->setIcon(mainWindow.style()->standardIcon(QStyle::SP_MediaStop));
     m_menu->addSeparator();
     m_menu->addAction(m_status->toggleViewAction());
     m_menu->addAction(m_parameters->toggleViewAction());
@@ -84,6 +87,11 @@ QString Pmc960Workspace::busyReason() const {
 
 QList<QMenu*> Pmc960Workspace::menus() const {
     return {m_menu};
+}
+
+QList<QAction*> Pmc960Workspace::toolBarActions() const {
+    return {action(QStringLiteral("Download Program")), nullptr, action(QStringLiteral("Run Routine")),
+            action(QStringLiteral("Stop"))};
 }
 
 QList<QDockWidget*> Pmc960Workspace::docks() const {

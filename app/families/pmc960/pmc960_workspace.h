@@ -29,6 +29,7 @@ public:
 
     QList<QMenu*> menus() const override;
     QList<QDockWidget*> docks() const override;
+    QList<QAction*> toolBarActions() const override; // Download, Run Routine, Stop
     QString statusText() const override;
     ErrorSource* errorSource() const override;
     QString sampleProgram() const override; // hello.mpl

@@ -30,6 +30,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QStatusBar>
+#include <QStyle>
 
 namespace app {
 
@@ -135,6 +136,17 @@ void Sc750Workspace::createMenus() {
         ->setStatusTip(tr("A rolling chart of POSITION, VELOCITY, POS.ERROR... read while the program runs"));
     menu->addAction(tuning().action); // the gains, a test move and DACMON on the bench's oscilloscope
     m_optionsMenu = new Sc750ControllerMenu(*this, &window());
+    const QStyle* style = window().style();
+    action(QStringLiteral("Run Program"))->setIcon(style->standardIcon(QStyle::SP_MediaPlay));
+    action(QStringLiteral("Stop Program"))->setIcon(style->standardIcon(QStyle::SP_MediaStop));
+    action(QStringLiteral("Stop Program"))->setIconText(tr("Stop")); // the menu's text carries "\tCtrl+C"
+    action(QStringLiteral("Continue Program"))->setIcon(style->standardIcon(QStyle::SP_MediaSeekForward));
+}
+
+QList<QAction*> Sc750Workspace::toolBarActions() const {
+    return {action(QStringLiteral("Compile Program")), action(QStringLiteral("Run Program")),
+            action(QStringLiteral("Stop Program")),    action(QStringLiteral("Continue Program")),
+            nullptr,                                   action(QStringLiteral("Set Breakpoint"))};
 }
 
 QString Sc750Workspace::busyReason() const {

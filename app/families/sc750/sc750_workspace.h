@@ -40,6 +40,7 @@ public:
 
     QList<QMenu*> menus() const override;
     QList<QDockWidget*> docks() const override;
+    QList<QAction*> toolBarActions() const override; // Compile, Run, Stop, Continue | Set Breakpoint
     QString statusText() const override;
     ErrorSource* errorSource() const override;
     QString sampleProgram() const override; // hello.bas
