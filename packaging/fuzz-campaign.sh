@@ -35,6 +35,7 @@ if [ -z "$line" ]; then
     exit 2
 fi
 read -r name dir corpus seeds flags <<<"$line"
+commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?') # the code the run fuzzes
 build_fuzzers "$name"
 
 work=$build/$name-campaign
@@ -58,11 +59,11 @@ if [ "$found" = 0 ]; then
 fi
 [ -f "$ledger" ] || printf '%s\n' \
     '# Fuzzing campaigns (issue 20): one row per run of packaging/fuzz-campaign.sh' '' \
-    'Executions are libFuzzer'"'"'s own count. `packaging/fuzz-campaign.sh --totals` sums them per target.' '' \
+    'Executions are libFuzzer'"'"'s own count; the commit is the one the run started at.' \
+    '`packaging/fuzz-campaign.sh --totals` sums them per target.' '' \
     '| date | commit | target | executions | result | seed | kept |' \
     '| --- | --- | --- | --- | --- | --- | --- |' >"$ledger"
 result=$([ "$found" = 0 ] && echo "no finding" || echo "FINDING (see $name-artifacts)")
-commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')
 printf '| %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$commit" "$name" "$done_runs" "$result" "$seed" \
     "$kept" >>"$ledger"
 echo "fuzz-campaign: $name: $done_runs executions, $result; $kept inputs merged into $corpus"
