@@ -29,6 +29,15 @@ std::string_view familyName(DriveFamily family) {
     return "bds5";
 }
 
+std::string_view familyTitle(DriveFamily family) {
+    switch (family) {
+    case DriveFamily::Bds5: return "BDS5";
+    case DriveFamily::Sc750: return "SC750";
+    case DriveFamily::Pmc960: return "PMC-960";
+    }
+    return "BDS5";
+}
+
 std::unique_ptr<Drive> makeDrive(DriveFamily family) {
     switch (family) {
     case DriveFamily::Bds5: return std::make_unique<bds5::Bds5Drive>();

@@ -29,12 +29,7 @@ bool needsDrive(const CliCommand& c) {
 } // namespace
 
 QString familyDisplayName(drive_core::DriveFamily f) {
-    switch (f) {
-    case drive_core::DriveFamily::Bds5: return QStringLiteral("BDS5");
-    case drive_core::DriveFamily::Sc750: return QStringLiteral("SC750");
-    case drive_core::DriveFamily::Pmc960: return QStringLiteral("PMC-960");
-    }
-    return {};
+    return QString::fromLatin1(drive_core::familyTitle(f));
 }
 
 CliRunner::CliRunner(CliOptions options, QObject* parent) : QObject(parent), m_options(std::move(options)) {

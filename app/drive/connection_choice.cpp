@@ -1,6 +1,8 @@
 // ConnectionChoice: settings persistence and link creation.
 #include "connection_choice.h"
 
+#include "drive_core/drive_factory.h"
+
 #include "serialport/serial_port_link.h"
 #include "serialport/simulator_link.h"
 
@@ -56,27 +58,15 @@ QString ConnectionChoice::portText() const {
 }
 
 QString ConnectionChoice::familyName(drive_core::DriveFamily family) {
-    switch (family) {
-    case drive_core::DriveFamily::Bds5: return QStringLiteral("BDS5");
-    case drive_core::DriveFamily::Sc750: return QStringLiteral("SC750");
-    case drive_core::DriveFamily::Pmc960: return QStringLiteral("PMC-960");
-    }
-    return {};
+    return QString::fromLatin1(drive_core::familyTitle(family));
 }
 
 QString ConnectionChoice::familyKey(drive_core::DriveFamily family) {
-    switch (family) {
-    case drive_core::DriveFamily::Bds5: return QStringLiteral("bds5");
-    case drive_core::DriveFamily::Sc750: return QStringLiteral("sc750");
-    case drive_core::DriveFamily::Pmc960: return QStringLiteral("pmc960");
-    }
-    return {};
+    return QString::fromLatin1(drive_core::familyName(family));
 }
 
 std::optional<drive_core::DriveFamily> ConnectionChoice::familyFromKey(const QString& key) {
-    for (const auto f : {drive_core::DriveFamily::Bds5, drive_core::DriveFamily::Sc750, drive_core::DriveFamily::Pmc960})
-        if (key.compare(familyKey(f), Qt::CaseInsensitive) == 0) return f;
-    return std::nullopt;
+    return drive_core::familyFromName(key.toStdString());
 }
 
 } // namespace app

@@ -61,12 +61,7 @@ bool DocumentController::openFile(const QString& path) {
         showError(result.message);
         return false;
     }
-    m_tabs.refreshTab(editor);
-    m_recent.add(path);
-    rememberDirectory(path);
-    emit fileLoaded(editor, path);
-    emit documentChanged();
-    emit statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
+    tabNowShows(editor, path, &DocumentController::fileLoaded, tr("Opened %1"));
     return true;
 }
 
@@ -190,13 +185,20 @@ bool DocumentController::writeTo(editor::ProgramEditor* editor, const QString& p
         showError(result.message);
         return false;
     }
+    tabNowShows(editor, path, &DocumentController::fileSaved, tr("Saved %1"));
+    return true;
+}
+
+// A tab that has just been read from or written to path: its title, the recent list and the next dialog's
+// folder; then done (fileLoaded or fileSaved) and the status (with %1 for the path).
+void DocumentController::tabNowShows(editor::ProgramEditor* editor, const QString& path, FileSignal done,
+                                     const QString& status) {
     m_tabs.refreshTab(editor);
     m_recent.add(path);
     rememberDirectory(path);
-    emit fileSaved(editor, path);
+    emit(this->*done)(editor, path);
     emit documentChanged();
-    emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
-    return true;
+    emit statusMessage(status.arg(QDir::toNativeSeparators(path)));
 }
 
 void DocumentController::showError(const QString& message) {

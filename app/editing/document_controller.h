@@ -72,6 +72,8 @@ private:
     void saveThen(editor::ProgramEditor* editor, std::function<void()> then);
     void saveAsThen(editor::ProgramEditor* editor, std::function<void()> then);
     bool writeTo(editor::ProgramEditor* editor, const QString& path);
+    using FileSignal = void (DocumentController::*)(editor::ProgramEditor*, const QString&);
+    void tabNowShows(editor::ProgramEditor* editor, const QString& path, FileSignal done, const QString& status);
     void showError(const QString& message);
 
     EditorTabs& m_tabs;

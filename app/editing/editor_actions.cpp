@@ -198,42 +198,46 @@ void EditorActions::saveBlock() {
     }
     auto* dialog = new QFileDialog(m_dialogParent, tr("Save Block As"), m_documents.startDirectory(),
                                    saveFilter(m_tabs.fileType(e)));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setAcceptMode(QFileDialog::AcceptSave);
     dialog->setDefaultSuffix(defaultSuffix(m_tabs.fileType(e)));
-    connect(dialog, &QFileDialog::fileSelected, this, &EditorActions::saveBlockTo);
-    dialog->open();
+    openDialog(dialog, &EditorActions::saveBlockTo);
 }
 
 bool EditorActions::saveBlockTo(const QString& path) {
     auto* e = current();
     if (!e) return false;
-    if (const auto result = e->saveSelectedText(path); !result.ok) {
-        showError(result.message);
-        return false;
-    }
-    m_documents.rememberDirectory(path);
-    emit statusMessage(tr("Block saved to %1").arg(QDir::toNativeSeparators(path)));
-    return true;
+    const auto result = e->saveSelectedText(path);
+    if (result.ok) m_documents.rememberDirectory(path);
+    return report(result, tr("Block saved to %1").arg(QDir::toNativeSeparators(path)));
 }
 
 void EditorActions::mergeFile() {
     auto* dialog = new QFileDialog(m_dialogParent, tr("Merge File"), m_documents.startDirectory(), openFilter());
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setAcceptMode(QFileDialog::AcceptOpen);
     dialog->setFileMode(QFileDialog::ExistingFile);
-    connect(dialog, &QFileDialog::fileSelected, this, &EditorActions::mergeFileFrom);
-    dialog->open();
+    openDialog(dialog, &EditorActions::mergeFileFrom);
 }
 
 bool EditorActions::mergeFileFrom(const QString& path) {
     auto* e = current();
     if (!e) return false;
-    if (const auto result = e->insertFile(path); !result.ok) {
+    return report(e->insertFile(path), tr("Merged %1 at the cursor").arg(QFileInfo(path).fileName()));
+}
+
+// Non-modal: the dialog deletes itself when it closes and hands the chosen file to take.
+void EditorActions::openDialog(QFileDialog* dialog, bool (EditorActions::*take)(const QString&)) {
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QFileDialog::fileSelected, this, take);
+    dialog->open();
+}
+
+// A block file operation's outcome: its error in a message box, or done in the status bar.
+bool EditorActions::report(const editor::FileResult& result, const QString& done) {
+    if (!result.ok) {
         showError(result.message);
         return false;
     }
-    emit statusMessage(tr("Merged %1 at the cursor").arg(QFileInfo(path).fileName()));
+    emit statusMessage(done);
     return true;
 }
 

@@ -13,10 +13,12 @@
 #include <functional>
 
 class QAction;
+class QFileDialog;
 class QMenu;
 
 namespace editor {
 class EditorSizeDialog;
+struct FileResult;
 class FindBar;
 class GoToLineDialog;
 class ProgramEditor;
@@ -69,6 +71,8 @@ private:
     void pasteBlock();
     void saveBlock();
     void mergeFile();
+    void openDialog(QFileDialog* dialog, bool (EditorActions::*take)(const QString&));
+    bool report(const editor::FileResult& result, const QString& done);
     void print();
     void printPdf();
     void deleteWord();

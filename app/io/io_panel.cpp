@@ -38,6 +38,11 @@ QPushButton* toggle(const QString& text, QWidget* parent) {
 }
 } // namespace
 
+template <typename Sender, typename Signal, typename Value>
+void IoPanel::toBench(Sender* sender, Signal changed, void (drive_core::SimulatorControls::*set)(Value)) {
+    connect(sender, changed, this, [this, set](Value v) { bench([set, v](drive_core::SimulatorControls& c) { (c.*set)(v); }); });
+}
+
 IoPanel::IoPanel(DriveConnection& connection, QWidget* parent)
     : QDockWidget(tr("I/O Panel"), parent), m_connection(connection) {
     setObjectName(QStringLiteral("ioPanel"));
@@ -89,12 +94,9 @@ QWidget* IoPanel::makeInputs() {
     m_motion->setChecked(true);
     const QList<QPushButton*> dedicated{m_enable, m_motion, m_home, m_posLimit, m_negLimit};
     for (int k = 0; k < dedicated.size(); ++k) grid->addWidget(dedicated[k], 2, k < 3 ? k : k + 3);
-    connect(m_enable, &QPushButton::toggled, this,
-            [this](bool on) { bench([on](drive_core::SimulatorControls& c) { c.setEnableInput(on); }); });
-    connect(m_motion, &QPushButton::toggled, this,
-            [this](bool on) { bench([on](drive_core::SimulatorControls& c) { c.setMotionInput(on); }); });
-    connect(m_home, &QPushButton::toggled, this,
-            [this](bool on) { bench([on](drive_core::SimulatorControls& c) { c.setHomeSwitch(on); }); });
+    toBench(m_enable, &QPushButton::toggled, &drive_core::SimulatorControls::setEnableInput);
+    toBench(m_motion, &QPushButton::toggled, &drive_core::SimulatorControls::setMotionInput);
+    toBench(m_home, &QPushButton::toggled, &drive_core::SimulatorControls::setHomeSwitch);
     auto limits = [this] {
         const bool pos = m_posLimit->isChecked(), neg = m_negLimit->isChecked();
         bench([pos, neg](drive_core::SimulatorControls& c) { c.setLimitSwitches(pos, neg); });
@@ -165,18 +167,15 @@ QWidget* IoPanel::makeBench() {
     form->addRow(tr("Master encoder"), m_master);
     form->addRow(tr("Motor"), m_motor);
     form->addRow(QString(), m_powerCycle);
-    connect(m_torque, &QDoubleSpinBox::valueChanged, this,
-            [this](double v) { bench([v](drive_core::SimulatorControls& c) { c.setLoadTorque_Nm(v); }); });
-    connect(m_inertia, &QDoubleSpinBox::valueChanged, this,
-            [this](double v) { bench([v](drive_core::SimulatorControls& c) { c.setLoadInertia_kgm2(v); }); });
+    toBench(m_torque, &QDoubleSpinBox::valueChanged, &drive_core::SimulatorControls::setLoadTorque_Nm);
+    toBench(m_inertia, &QDoubleSpinBox::valueChanged, &drive_core::SimulatorControls::setLoadInertia_kgm2);
     auto coupling = [this] {
         const double k = m_stiffness->value(), d = m_damping->value();
         bench([k, d](drive_core::SimulatorControls& c) { c.setLoadCoupling(k, d); });
     };
     connect(m_stiffness, &QDoubleSpinBox::valueChanged, this, coupling);
     connect(m_damping, &QDoubleSpinBox::valueChanged, this, coupling);
-    connect(m_master, &QDoubleSpinBox::valueChanged, this,
-            [this](double v) { bench([v](drive_core::SimulatorControls& c) { c.setMasterFrequency_Hz(v); }); });
+    toBench(m_master, &QDoubleSpinBox::valueChanged, &drive_core::SimulatorControls::setMasterFrequency_Hz);
     connect(m_motor, &QComboBox::currentTextChanged, this, [this](const QString& name) {
         bench([name = name.toStdString()](drive_core::SimulatorControls& c) { c.selectMotor(name); });
     });

@@ -52,6 +52,9 @@ private:
     QWidget* makeBench();
     void followLink();
     void bench(std::function<void(drive_core::SimulatorControls&)> change);
+    // Each value the sender's signal carries goes to the bench's setter.
+    template <typename Sender, typename Signal, typename Value>
+    void toBench(Sender* sender, Signal changed, void (drive_core::SimulatorControls::*set)(Value));
     void showStatus(const drive_core::SimulatorStatus& status);
     void showOutputs(const std::vector<bool>& outputs);
     void pollRealDrive();

@@ -96,23 +96,19 @@ TuningPanel::TuningPanel(MainWindow& window, QWidget* parent)
 }
 
 QWidget* TuningPanel::buildGains() {
-    auto* box = new QGroupBox(tr("Gains"), this);
-    auto* form = new QFormLayout(box);
+    const auto [box, form] = addControlGroup(this, tr("Gains"));
     for (const GainInfo& g : tuningGains()) {
         auto* editor = new GainEditor(g, box);
         m_editors.insert(g.name, editor);
         form->addRow(g.name, editor);
         connect(editor, &GainEditor::edited, m_runner, &TuningRunner::setGain);
     }
-    auto* read = new QPushButton(tr("Read from Drive"), box);
-    connect(read, &QPushButton::clicked, m_runner, &TuningRunner::readGains);
-    form->addRow(read);
+    addReadGains({box, form}, m_runner);
     return box;
 }
 
 QWidget* TuningPanel::buildTestMove() {
-    auto* box = new QGroupBox(tr("Test move"), this);
-    auto* form = new QFormLayout(box);
+    const auto [box, form] = addControlGroup(this, tr("Test move"));
     m_moveKind = new QComboBox(box);
     for (const auto kind : {TestMove::Kind::VelocityStep, TestMove::Kind::PositionStep, TestMove::Kind::BackAndForth,
                             TestMove::Kind::FrequencyStep})
@@ -157,10 +153,7 @@ QWidget* TuningPanel::buildTestMove() {
     });
     connect(m_runner, &TuningRunner::driveValuesRead, this, &TuningPanel::updateProposal);
     connect(m_runner, &TuningRunner::gainConfirmed, this, &TuningPanel::updateProposal);
-    const RunButtons run = addRunButtons(box, form);
-    m_runOnce = run.once;
-    m_runLoop = run.loop;
-    m_stop = run.stop;
+    m_run = addRunButtons(box, form, m_runner);
     m_progress = new QProgressBar(box);
     m_progress->setTextVisible(false);
     m_progress->setMaximumHeight(8);
@@ -171,15 +164,11 @@ QWidget* TuningPanel::buildTestMove() {
     m_warning->setStyleSheet(QStringLiteral("color: #b3261e"));
     m_warning->hide();
     form->addRow(m_warning);
-    connect(m_runOnce, &QPushButton::clicked, m_runner, &TuningRunner::runOnce);
-    connect(m_runLoop, &QPushButton::clicked, m_runner, &TuningRunner::runContinuously);
-    connect(m_stop, &QPushButton::clicked, m_runner, &TuningRunner::stop);
     return box;
 }
 
 QWidget* TuningPanel::buildTune() {
-    auto* box = new QGroupBox(tr("TUNE (self-tuning)"), this);
-    auto* form = new QFormLayout(box);
+    const auto [box, form] = addControlGroup(this, tr("TUNE (self-tuning)"));
     m_bandwidth = new QComboBox(box);
     for (const int hz : kBandwidths) m_bandwidth->addItem(tr("%1 Hz").arg(hz), hz);
     m_bandwidth->setCurrentIndex(5); // 30 Hz, the manual's example
@@ -328,9 +317,7 @@ void TuningPanel::addRun(const TuningRun& run) {
 
 void TuningPanel::updateButtons() {
     if (m_limitsQuestion && !m_runner->isWaitingForAnswer()) m_limitsQuestion->close(); // Stop answered it
-    m_runOnce->setEnabled(!m_runner->isRunning());
-    m_runLoop->setEnabled(!m_runner->isContinuous());
-    m_stop->setEnabled(m_runner->isRunning());
+    m_run.update(m_runner->isRunning(), m_runner->isContinuous(), m_runner->isRunning());
 }
 
 void TuningPanel::setStatus(const QString& text) {

@@ -5,6 +5,7 @@
 // manual's warning. The drive work is TuningRunner's. GUI thread only.
 #pragma once
 
+#include "tuning/tuning_frame.h"
 #include "tuning_runner.h"
 
 #include <QMap>
@@ -67,14 +68,12 @@ private:
     QMap<QString, GainEditor*> m_editors;
     ScopeView* m_view;
     QTableWidget* m_runsTable;
+    RunButtons m_run; // the frame: the scope, the runs and the row that starts and stops them
     QComboBox* m_moveKind = nullptr;
     QSpinBox* m_amplitude = nullptr;
     QSpinBox* m_duration = nullptr;
     QComboBox* m_bandwidth = nullptr;
     QComboBox* m_stability = nullptr;
-    QPushButton* m_runOnce = nullptr;
-    QPushButton* m_runLoop = nullptr;
-    QPushButton* m_stop = nullptr;
     QPushButton* m_undo = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;

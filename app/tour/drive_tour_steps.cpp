@@ -167,20 +167,13 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
                              window.captureLog().stop();
                              window.terminalDock()->raise();
                          }});
-    auto dialog = std::make_shared<QPointer<OptionsDialog>>();
     for (const QString& page : {QStringLiteral("communications"), QStringLiteral("drive")}) {
-        steps.push_back({.name = page == QLatin1String("drive") ? QStringLiteral("options-drive") : QStringLiteral("options"),
-                         .act =
-                             [&window, dialog, page] {
-                                 *dialog = window.optionsController().showDialog();
-                                 (*dialog)->showPage(page);
-                             },
-                         .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
-                         .grab = [dialog] { return TourShot::of(*dialog); },
-                         .cleanUp =
-                             [dialog] {
-                                 if (*dialog) (*dialog)->reject();
-                             }});
+        const QString name = page == QLatin1String("drive") ? QStringLiteral("options-drive") : QStringLiteral("options");
+        steps.push_back(ScreenshotTour::dialogStep(name, [&window, page] {
+            OptionsDialog* dialog = window.optionsController().showDialog();
+            dialog->showPage(page);
+            return dialog;
+        }));
     }
     steps.push_back({.name = QStringLiteral("help-reference"),
                      .act = [&window] { window.helpBrowser()->showTopic(QStringLiteral("ERR 25")); },

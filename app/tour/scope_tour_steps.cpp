@@ -47,6 +47,19 @@ ScreenshotTour::Step tuningRun(MainWindow& window, const QString& name, int runs
 
 } // namespace
 
+void setVelocityStep(MainWindow& window, TuningPanel& panel, int amplitude) {
+    panel.runner().setGain(QStringLiteral("KV"), 2000);
+    panel.runner().setGain(QStringLiteral("PL"), 0);
+    // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
+    for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
+        window.connection().sendCommand(QString::fromLatin1(line));
+    TestMove move;
+    move.kind = TestMove::Kind::FrequencyStep;
+    move.amplitude = amplitude;
+    move.durationMs = 400;
+    panel.setTestMove(move);
+}
+
 std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
     ScopeController& scope = window.scopeController();
     std::vector<ScreenshotTour::Step> steps;
@@ -107,17 +120,7 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
     ScreenshotTour::Step response = tuningRun(window, QStringLiteral("scope-bode"), 4, 0);
     const auto runFourth = response.act;
     response.act = [&window, panel, runFourth] {
-        // The velocity loop alone at the power-up KV, driven by a true step: the loop's own response.
-        panel->runner().setGain(QStringLiteral("KV"), 2000);
-        panel->runner().setGain(QStringLiteral("PL"), 0);
-        // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
-        for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
-            window.connection().sendCommand(QString::fromLatin1(line));
-        TestMove move;
-        move.kind = TestMove::Kind::FrequencyStep;
-        move.amplitude = 500;
-        move.durationMs = 400;
-        panel->setTestMove(move);
+        setVelocityStep(window, *panel, 500);
         runFourth();
     };
     const auto fourthDone = response.ready;

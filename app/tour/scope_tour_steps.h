@@ -10,7 +10,12 @@
 namespace app {
 
 class MainWindow;
+class TuningPanel;
 
 std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window);
+
+// The velocity loop alone at the power-up KV (position loop off), driven by a true step of amplitude RPM held
+// for the record: the loop's own response, for the Bode and spectrum shots.
+void setVelocityStep(MainWindow& window, TuningPanel& panel, int amplitude);
 
 } // namespace app

@@ -59,7 +59,6 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
         const auto* session = m_window.connection().session();
         return session && session->state() == serialport::Bds5Session::State::Ready;
     };
-    auto dialog = std::make_shared<QPointer<ConnectionDialog>>();
     std::vector<Step> steps;
     // A drive on a serial port signed on before we opened it; only the simulator's sign-on can be awaited.
     const bool simulated = m_window.connection().choice().kind == ConnectionChoice::Kind::Simulator;
@@ -78,18 +77,11 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
                      .grab = [this] { return TourShot::of(m_window.terminalDock()); },
                      .text = [terminal] { return terminal->text(); }});
     steps.push_back({.name = QStringLiteral("editor"), .grab = [this] { return TourShot::of(m_window.editor()); }});
-    steps.push_back({.name = QStringLiteral("connection-dialog"),
-                     .act =
-                         [this, dialog] {
-                             *dialog = m_window.showConnectionDialog();
-                             (*dialog)->setChoice(ConnectionChoice::simulator());
-                         },
-                     .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
-                     .grab = [dialog] { return TourShot::of(*dialog); },
-                     .cleanUp =
-                         [dialog] {
-                             if (*dialog) (*dialog)->reject();
-                         }});
+    steps.push_back(dialogStep(QStringLiteral("connection-dialog"), [this] {
+        ConnectionDialog* dialog = m_window.showConnectionDialog();
+        dialog->setChoice(ConnectionChoice::simulator());
+        return dialog;
+    }));
     for (Step& step : transferTourSteps(m_window)) steps.push_back(std::move(step));
     for (Step& step : tabsTourSteps(m_window, m_outputDir)) steps.push_back(std::move(step));
     for (Step& step : editorTourSteps(m_window)) steps.push_back(std::move(step));

@@ -13,6 +13,8 @@
 #include <QTimer>
 
 #include <functional>
+#include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace app {
@@ -37,6 +39,21 @@ public:
         std::function<void()> cleanUp; // optional: after the grab (close the dialog)
         std::function<QString()> state; // optional: what the step waits on, said when it times out
     };
+
+    // A step that opens a dialog (open() returns it, set up as the shot wants), waits until it shows, grabs
+    // it and closes it with reject().
+    template <typename Open>
+    static Step dialogStep(const QString& name, Open open) {
+        using Dialog = std::remove_pointer_t<std::invoke_result_t<Open>>;
+        auto dialog = std::make_shared<QPointer<Dialog>>();
+        return {.name = name,
+                .act = [dialog, open] { *dialog = open(); },
+                .ready = [dialog] { return *dialog && (*dialog)->isVisible(); },
+                .grab = [dialog] { return TourShot::of(*dialog); },
+                .cleanUp = [dialog] {
+                    if (*dialog) (*dialog)->reject();
+                }};
+    }
 
     ScreenshotTour(MainWindow& window, const QString& outputDir, QObject* parent = nullptr);
 

@@ -2,6 +2,8 @@
 // makes them (bench fields, gain editors, Run Once), then the Spectrum view grabbed.
 #include "spectrum_tour_steps.h"
 
+#include "scope_tour_steps.h"
+
 #include "drive_connection.h"
 #include "io/io_panel.h"
 #include "main_window.h"
@@ -45,18 +47,8 @@ std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
                              bench.loadInertiaField()->setValue(kLoadInertia_kgm2);
                              bench.couplingStiffnessField()->setValue(kStiffness_NmPerRad);
                              bench.couplingDampingField()->setValue(kDamping_NmsPerRad);
-                             // The velocity loop alone at its power-up gains, driven by a true step held for the
-                             // record (as scope-bode).
-                             panel->runner().setGain(QStringLiteral("KV"), 2000);
                              panel->runner().setGain(QStringLiteral("PLIM"), 0);
-                             panel->runner().setGain(QStringLiteral("PL"), 0);
-                             for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
-                                 window.connection().sendCommand(QString::fromLatin1(line));
-                             TestMove move;
-                             move.kind = TestMove::Kind::FrequencyStep;
-                             move.amplitude = 300;
-                             move.durationMs = 400;
-                             panel->setTestMove(move);
+                             setVelocityStep(window, *panel, 300); // as scope-bode
                              panel->runner().runOnce();
                          },
                      .ready = runDone(1)});

@@ -84,7 +84,6 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
     EditorTabs* tabs = area->tabs();
     auto opened = std::make_shared<QList<QPointer<editor::ProgramEditor>>>();
     auto sizeDialog = std::make_shared<QPointer<editor::EditorSizeDialog>>();
-    auto goToLine = std::make_shared<QPointer<editor::GoToLineDialog>>();
     const QString motion = outputDir.absoluteFilePath(QStringLiteral("MOTION.BDS"));
     std::vector<ScreenshotTour::Step> steps;
 
@@ -145,19 +144,12 @@ std::vector<ScreenshotTour::Step> tabsTourSteps(MainWindow& window, const QDir& 
                              area->findBar()->hide();
                          }});
 
-    steps.push_back({.name = QStringLiteral("editor-goto-line"),
-                     .act =
-                         [area, goToLine] {
-                             *goToLine = area->actions()->showGoToLine();
-                             (*goToLine)->setCounting(editor::LineCounting::WithoutComments);
-                             (*goToLine)->setLineNumber(6);
-                         },
-                     .ready = [goToLine] { return *goToLine && (*goToLine)->isVisible(); },
-                     .grab = [goToLine] { return TourShot::of(*goToLine); },
-                     .cleanUp =
-                         [goToLine] {
-                             if (*goToLine) (*goToLine)->reject();
-                         }});
+    steps.push_back(ScreenshotTour::dialogStep(QStringLiteral("editor-goto-line"), [area] {
+        editor::GoToLineDialog* goToLine = area->actions()->showGoToLine();
+        goToLine->setCounting(editor::LineCounting::WithoutComments);
+        goToLine->setLineNumber(6);
+        return goToLine;
+    }));
 
     steps.push_back({.name = QStringLiteral("editor-size"),
                      .act = [area, sizeDialog] { *sizeDialog = area->actions()->showSize(); },

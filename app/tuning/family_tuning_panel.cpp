@@ -88,8 +88,7 @@ FamilyTuningPanel::FamilyTuningPanel(TuningProfile profile, QWidget* parent)
 }
 
 QWidget* FamilyTuningPanel::buildGains() {
-    auto* box = new QGroupBox(tr("Gains"), this);
-    auto* form = new QFormLayout(box);
+    const auto [box, form] = addControlGroup(this, tr("Gains"));
     for (const TuningGain& g : m_runner->profile().gains) {
         auto* spin = new QDoubleSpinBox(box);
         spin->setObjectName(QStringLiteral("gain_") + g.name);
@@ -112,9 +111,7 @@ QWidget* FamilyTuningPanel::buildGains() {
             m_runner->setGain(name, value);
         });
     }
-    auto* read = new QPushButton(tr("Read from Drive"), box);
-    connect(read, &QPushButton::clicked, m_runner, &FamilyTuningRunner::readGains);
-    form->addRow(read);
+    addReadGains({box, form}, m_runner);
     auto* note = new QLabel(m_runner->profile().prepareNote, box);
     note->setWordWrap(true);
     form->addRow(note);
@@ -122,8 +119,7 @@ QWidget* FamilyTuningPanel::buildGains() {
 }
 
 QWidget* FamilyTuningPanel::buildTestMove() {
-    auto* box = new QGroupBox(tr("Test move"), this);
-    auto* form = new QFormLayout(box);
+    const auto [box, form] = addControlGroup(this, tr("Test move"));
     m_move = new QComboBox(box);
     for (const TuningMove& m : m_runner->profile().moves) m_move->addItem(m.name);
     m_amplitude = new QSpinBox(box);
@@ -146,14 +142,8 @@ QWidget* FamilyTuningPanel::buildTestMove() {
     m_amplitude->setValue(m_runner->profile().moves.value(0).amplitude);
     connect(m_amplitude, &QSpinBox::valueChanged, this, &FamilyTuningPanel::applyMove);
     connect(m_hold, &QSpinBox::valueChanged, this, &FamilyTuningPanel::applyMove);
-    const RunButtons run = addRunButtons(box, form);
-    m_runOnce = run.once;
-    m_runLoop = run.loop;
-    m_stop = run.stop;
+    m_run = addRunButtons(box, form, m_runner);
     m_status = addStatusLine(box, form, QStringLiteral("familyTuningStatus"));
-    connect(m_runOnce, &QPushButton::clicked, m_runner, &FamilyTuningRunner::runOnce);
-    connect(m_runLoop, &QPushButton::clicked, m_runner, &FamilyTuningRunner::runContinuously);
-    connect(m_stop, &QPushButton::clicked, m_runner, &FamilyTuningRunner::stop);
     return box;
 }
 
@@ -240,9 +230,7 @@ void FamilyTuningPanel::showBode() {
 }
 
 void FamilyTuningPanel::updateButtons() {
-    m_runOnce->setEnabled(!m_runner->isRunning());
-    m_runLoop->setEnabled(!m_runner->isContinuous());
-    m_stop->setEnabled(m_runner->isContinuous());
+    m_run.update(m_runner->isRunning(), m_runner->isContinuous(), m_runner->isContinuous());
     m_undo->setEnabled(m_runsTable->currentRow() >= 0);
 }
 

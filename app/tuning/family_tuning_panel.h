@@ -7,6 +7,7 @@
 #pragma once
 
 #include "family_tuning_runner.h"
+#include "tuning_frame.h"
 
 #include <QMap>
 #include <QWidget>
@@ -57,15 +58,13 @@ private:
     FamilyTuningRunner* m_runner;
     ScopeView* m_view;
     QTableWidget* m_runsTable;
+    RunButtons m_run; // the frame: the scope, the runs and the row that starts and stops them
     QMap<QString, QDoubleSpinBox*> m_editors;
     QMap<QString, QLabel*> m_marks;
     QComboBox* m_move = nullptr;
     QSpinBox* m_amplitude = nullptr;
     QSpinBox* m_hold = nullptr;
     QLabel* m_moveText = nullptr;
-    QPushButton* m_runOnce = nullptr;
-    QPushButton* m_runLoop = nullptr;
-    QPushButton* m_stop = nullptr;
     QPushButton* m_undo = nullptr;
     QPushButton* m_bodeButton = nullptr;
     BodeView* m_bode = nullptr;

@@ -5,6 +5,7 @@
 
 #include <QColor>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -56,6 +57,15 @@ void setUpRunsTable(QTableWidget* runs, const QStringList& columns) {
     runs->setSelectionMode(QAbstractItemView::SingleSelection);
 }
 
+ControlGroup addControlGroup(QWidget* panel, const QString& title) {
+    auto* box = new QGroupBox(title, panel);
+    return {box, new QFormLayout(box)};
+}
+
+void addRow(const ControlGroup& group, QWidget* row) {
+    group.form->addRow(row);
+}
+
 RunButtons addRunButtons(QWidget* box, QFormLayout* form) {
     RunButtons b;
     b.once = new QPushButton(QObject::tr("Run Once"), box);
@@ -67,6 +77,12 @@ RunButtons addRunButtons(QWidget* box, QFormLayout* form) {
     row->addWidget(b.stop);
     form->addRow(row);
     return b;
+}
+
+void RunButtons::update(bool running, bool continuous, bool stoppable) const {
+    once->setEnabled(!running);
+    loop->setEnabled(!continuous);
+    stop->setEnabled(stoppable);
 }
 
 QLabel* addStatusLine(QWidget* box, QFormLayout* form, const QString& objectName) {

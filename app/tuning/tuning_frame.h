@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QList>
+#include <QPushButton>
 #include <QString>
 #include <QStringList>
 
@@ -12,7 +13,6 @@
 
 class QFormLayout;
 class QLabel;
-class QPushButton;
 class QTableWidget;
 class QWidget;
 
@@ -25,13 +25,40 @@ void layOutTuningFrame(QWidget* panel, QWidget* controls, ScopeView* view, QTabl
                        const QList<QPushButton*>& runButtons);
 void setUpRunsTable(QTableWidget* runs, const QStringList& columns);
 
+// A group of the controls column ("Gains", "Test move"): the box, titled, with a form in it.
+struct ControlGroup {
+    QWidget* box;
+    QFormLayout* form;
+};
+ControlGroup addControlGroup(QWidget* panel, const QString& title);
+void addRow(const ControlGroup& group, QWidget* row);
+// The gains group's last row: Read from Drive, connected to the runner's readGains.
+template <typename Runner>
+void addReadGains(const ControlGroup& group, Runner* runner) {
+    auto* read = new QPushButton(QObject::tr("Read from Drive"), group.box);
+    QObject::connect(read, &QPushButton::clicked, runner, &Runner::readGains);
+    addRow(group, read);
+}
+
 // The test move's Run Once / Run Continuously / Stop row, added to its form.
 struct RunButtons {
     QPushButton* once = nullptr;
     QPushButton* loop = nullptr;
     QPushButton* stop = nullptr;
+
+    // Run Once while no run is under way, Run Continuously while the runs are not continuous, Stop as told.
+    void update(bool running, bool continuous, bool stoppable) const;
 };
 RunButtons addRunButtons(QWidget* box, QFormLayout* form);
+// The row, connected to the runner's runOnce, runContinuously and stop.
+template <typename Runner>
+RunButtons addRunButtons(QWidget* box, QFormLayout* form, Runner* runner) {
+    const RunButtons run = addRunButtons(box, form);
+    QObject::connect(run.once, &QPushButton::clicked, runner, &Runner::runOnce);
+    QObject::connect(run.loop, &QPushButton::clicked, runner, &Runner::runContinuously);
+    QObject::connect(run.stop, &QPushButton::clicked, runner, &Runner::stop);
+    return run;
+}
 QLabel* addStatusLine(QWidget* box, QFormLayout* form, const QString& objectName); // word-wrapped
 
 struct RunRow {
