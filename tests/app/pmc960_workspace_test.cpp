@@ -195,7 +195,7 @@ private slots:
         QSignalSpy downloaded(&ws.transfer(), &app::Pmc960ProgramTransfer::downloadFinished);
         QSignalSpy messages(&ws, &app::FamilyWorkspace::message);
         ws.action(QStringLiteral("Download Program"))->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(ws.transfer().progressDialog() && ws.transfer().progressDialog()->value() >= 3,
+        QTRY_VERIFY_WITH_TIMEOUT(ws.transfer().progressDialog() && ws.transfer().progressDialog()->progressValue() >= 3,
                                  kTimeoutMs);
         ws.action(QStringLiteral("Stop"))->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(downloaded.count(), 1, kTimeoutMs);

@@ -11,7 +11,6 @@
 #include "editor/program_editor.h"
 #include "serialport/pmc960_upload.h"
 
-#include <QProgressDialog>
 #include <QStatusBar>
 
 namespace app {
@@ -69,18 +68,13 @@ void Pmc960ProgramTransfer::download(editor::ProgramEditor* editor) {
     m_download = job;
     const int total = int(job->lines().size());
     setBusy(true);
-    m_progress = new QProgressDialog(tr("Downloading %n line(s) to the PMC-960 program buffer\u2026", nullptr, total),
-                                     tr("Cancel"), 0, total, &m_workspace.window());
-    m_progress->setWindowTitle(tr("Download Program"));
-    m_progress->setAttribute(Qt::WA_DeleteOnClose);
-    m_progress->setMinimumDuration(0);
-    m_progress->setMinimumWidth(420);
-    m_progress->setValue(0);
-    connect(m_progress, &QProgressDialog::canceled, job, &serialport::Pmc960Download::cancel);
+    m_progress = new TransferDialog(tr("Download Program"), tr("lines"), [job] { job->cancel(); }, &m_workspace.window());
+    m_progress->setStage(tr("Downloading %n line(s) to the PMC-960 program buffer\u2026", nullptr, total));
+    m_progress->showProgress(0, total);
     auto sent = std::make_shared<int>(0);
     connect(job, &serialport::Pmc960Download::progress, this, [this, sent](int lines, int) {
         *sent = lines;
-        if (m_progress) m_progress->setValue(lines);
+        if (m_progress) m_progress->showProgress(lines, m_download ? m_download->lines().size() : 0);
     });
     QPointer<editor::ProgramEditor> target(editor);
     connect(job, &serialport::Pmc960Download::done, this,
@@ -94,10 +88,6 @@ void Pmc960ProgramTransfer::download(editor::ProgramEditor* editor) {
 void Pmc960ProgramTransfer::finishDownload(const serialport::Pmc960DownloadResult& result,
                                            QPointer<editor::ProgramEditor> editor, const QString& text,
                                            int linesSent) {
-    if (m_progress) {
-        m_progress->disconnect(this);
-        m_progress->close();
-    }
     int line = 0;
     if (result.ok) {
         m_downloaded = text;
@@ -115,6 +105,14 @@ void Pmc960ProgramTransfer::finishDownload(const serialport::Pmc960DownloadResul
         if (editor && line > 0) TransferReporter::showLine(*editor, line);
     } else {
         report(tr("Download failed: %1").arg(result.reason), true);
+    }
+    if (m_progress) {
+        using Outcome = TransferDialog::Outcome;
+        m_progress->finish(result.ok ? Outcome::Done
+                           : result.cancelled ? Outcome::Cancelled
+                           : result.error != 0 ? Outcome::Refused
+                                               : Outcome::Failed,
+                           m_lastMessage);
     }
     setBusy(false);
     emit downloadFinished(result, line);

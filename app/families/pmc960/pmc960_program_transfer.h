@@ -4,12 +4,12 @@
 // words and the editor line it happened on. An upload opens the buffer in a new .mpl tab. GUI thread only.
 #pragma once
 
+#include "transfer_dialog.h"
+
 #include "serialport/pmc960_download.h"
 
 #include <QObject>
 #include <QPointer>
-
-#include <QProgressDialog>
 
 namespace editor {
 class ProgramEditor;
@@ -34,7 +34,7 @@ public:
     // The last transfer's summary as shown to the user ("Downloaded 7 lines; checksum 0x1A2B verified").
     QString lastMessage() const { return m_lastMessage; }
     // The progress dialog of the running download (the tour grabs it), else nullptr.
-    QProgressDialog* progressDialog() const { return m_progress; }
+    TransferDialog* progressDialog() const { return m_progress; }
     // The program the controller holds as far as this connection knows: the text of the last download its
     // checksum verified, and the editor it came from (which may have been edited or closed since). Null before
     // one, once another starts (P{} erases the buffer), and after forgetProgram() (a new connection).
@@ -61,7 +61,7 @@ private:
     void report(const QString& message, bool error);
 
     Pmc960Workspace& m_workspace;
-    QPointer<QProgressDialog> m_progress;
+    QPointer<TransferDialog> m_progress;
     QPointer<serialport::Pmc960Download> m_download;
     QString m_lastMessage;
     QString m_downloaded;

@@ -16,7 +16,6 @@
 #include "scope/watch_view.h"
 
 #include <QMenu>
-#include <QProgressDialog>
 #include <QStyle>
 
 namespace app {
@@ -180,8 +179,7 @@ QString Pmc960Workspace::statusText() const {
 void Pmc960Workspace::stop() {
     if (!isConnected()) return;
     if (m_transfer->isBusy() && m_transfer->progressDialog()) {
-        // ESC goes out now; the download leaves the editor and protects the buffer. (QProgressDialog::cancel()
-        // would only hide the dialog: it does not emit canceled().)
+        // ESC goes out now; the download leaves the editor and protects the buffer.
         m_transfer->cancelDownload();
         emit message(tr("Stop: ESC sent to the PMC-960; the download is cancelled"));
         return;

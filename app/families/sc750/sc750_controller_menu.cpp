@@ -10,6 +10,7 @@
 #include "editor_tabs.h"
 #include "file_types.h"
 #include "main_window.h"
+#include "transfer_dialog.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 #include "editor/program_editor.h"
@@ -22,7 +23,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -98,28 +98,23 @@ void Sc750ControllerMenu::downloadBinFile() {
     dialog->open();
 }
 
-Sc750SourceTransfer* Sc750ControllerMenu::startTransfer(const QString& title) {
+Sc750SourceTransfer* Sc750ControllerMenu::startTransfer(const QString& title, const QString& stage) {
     auto* transfer = new Sc750SourceTransfer(m_workspace);
-    auto* progress = new QProgressDialog(title, tr("Cancel"), 0, 0, &m_workspace.window());
-    progress->setWindowTitle(title);
-    progress->setAttribute(Qt::WA_DeleteOnClose);
-    progress->setMinimumDuration(0);
-    progress->setAutoClose(false);
-    progress->setAutoReset(false);
-    progress->open();
-    connect(progress, &QProgressDialog::canceled, transfer, &Sc750SourceTransfer::cancel);
-    connect(transfer, &Sc750SourceTransfer::progress, progress, [progress](qint64 done, qint64 total) {
-        progress->setMaximum(int(total)); // 0: busy, size unknown
-        progress->setValue(total ? int(done) : 0);
-        if (!total) progress->setLabelText(tr("%1 bytes read").arg(done));
-    });
-    connect(transfer, &Sc750SourceTransfer::finished, progress, &QWidget::close);
+    auto* progress = new TransferDialog(title, tr("bytes"), [transfer] { transfer->cancel(); }, &m_workspace.window());
+    progress->setStage(stage);
+    connect(transfer, &Sc750SourceTransfer::progress, progress, &TransferDialog::showProgress);
+    connect(transfer, &Sc750SourceTransfer::finished, progress,
+            [progress, transfer](bool ok, const QByteArray&, const QString& message) {
+                using Outcome = TransferDialog::Outcome;
+                progress->finish(ok ? Outcome::Done : transfer->isCancelled() ? Outcome::Cancelled : Outcome::Failed,
+                                 message);
+            });
     return transfer;
 }
 
 void Sc750ControllerMenu::downloadSource() {
     const QByteArray text = m_workspace.window().editor()->text().toUtf8();
-    Sc750SourceTransfer* transfer = startTransfer(tr("Download Source File"));
+    Sc750SourceTransfer* transfer = startTransfer(tr("Download Source File"), tr("Writing the source file to the SC750..."));
     connect(transfer, &Sc750SourceTransfer::finished, this, [this](bool ok, const QByteArray&, const QString& message) {
         emit m_workspace.message(ok ? message : tr("Download Source File: %1").arg(message));
     });
@@ -127,7 +122,7 @@ void Sc750ControllerMenu::downloadSource() {
 }
 
 void Sc750ControllerMenu::uploadSource() {
-    Sc750SourceTransfer* transfer = startTransfer(tr("Upload Source File"));
+    Sc750SourceTransfer* transfer = startTransfer(tr("Upload Source File"), tr("Reading the source file stored in the SC750..."));
     connect(transfer, &Sc750SourceTransfer::finished, this,
             [this](bool ok, const QByteArray& bytes, const QString& message) {
                 if (!ok) {

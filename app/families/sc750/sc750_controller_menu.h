@@ -37,7 +37,8 @@ public:
 private:
     void selectAxis();
     void downloadBinFile();
-    Sc750SourceTransfer* startTransfer(const QString& title);
+    // The transfer, followed by a TransferDialog titled title that says stage.
+    Sc750SourceTransfer* startTransfer(const QString& title, const QString& stage);
 
     Sc750Workspace& m_workspace;
 };

@@ -5,13 +5,13 @@
 #include "sc750_workspace.h"
 
 #include "main_window.h"
+#include "transfer_dialog.h"
 
 #include "editor/program_editor.h"
 #include "serialport/sc750_download.h"
 
 #include <QDir>
 #include <QFileInfo>
-#include <QProgressDialog>
 #include <QSaveFile>
 
 namespace app {
@@ -136,24 +136,20 @@ void Sc750Debugger::download(const std::vector<std::uint8_t>& bin) {
     markLine(0);
     auto* transfer = new serialport::Sc750Download(*session, bin, session);
     const int total = int(bin.size());
-    auto* progress = new QProgressDialog(tr("Downloading the program to the SC750..."), tr("Cancel"), 0, total,
-                                         &m_workspace.window());
+    auto* progress = new TransferDialog(tr("Run Program"), tr("bytes"), [transfer] { transfer->cancel(); },
+                                        &m_workspace.window());
     m_progress = progress;
-    progress->setWindowTitle(tr("Run Program"));
-    progress->setAttribute(Qt::WA_DeleteOnClose);
-    progress->setAutoClose(false);
-    progress->setAutoReset(false);
-    progress->setMinimumDuration(0);
-    progress->open();
-    connect(progress, &QProgressDialog::canceled, transfer, &serialport::Sc750Download::cancel);
-    connect(session, &QObject::destroyed, progress, &QWidget::close);
-    connect(transfer, &serialport::Sc750Download::progress, progress, [progress](qint64 sent, qint64 all) {
-        progress->setMaximum(int(all));
-        progress->setValue(int(sent));
+    progress->setStage(tr("Downloading the program to the SC750..."));
+    progress->showProgress(0, total);
+    connect(session, &QObject::destroyed, progress, [progress] {
+        progress->finish(TransferDialog::Outcome::Failed, tr("The connection to the SC750 closed."));
     });
+    connect(transfer, &serialport::Sc750Download::progress, progress, &TransferDialog::showProgress);
     connect(transfer, &serialport::Sc750Download::finished, this, [this, transfer](bool ok, const QString& why) {
         transfer->deleteLater();
-        if (m_progress) m_progress->close();
+        if (m_progress)
+            m_progress->finish(ok ? TransferDialog::Outcome::Done : TransferDialog::Outcome::Failed,
+                               ok ? QString() : tr("Download failed: %1").arg(why));
         if (!ok) {
             setState(State::NoProgram);
             emit message(tr("Download failed: %1").arg(why));

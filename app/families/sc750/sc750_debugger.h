@@ -12,7 +12,6 @@
 #include <QPointer>
 #include <QString>
 
-class QProgressDialog;
 
 namespace editor {
 class ProgramEditor;
@@ -21,6 +20,7 @@ class ProgramEditor;
 namespace app {
 
 class Sc750Workspace;
+class TransferDialog;
 
 class Sc750Debugger final : public QObject {
     Q_OBJECT
@@ -92,7 +92,7 @@ private:
 
     Sc750Workspace& m_workspace;
     QPointer<editor::ProgramEditor> m_program; // the editor whose program is on the drive
-    QPointer<QProgressDialog> m_progress;
+    QPointer<TransferDialog> m_progress;
     drive_core::sc750::CompileResult m_compiled;
     QString m_compiledText; // the text m_compiled came from
     QString m_lastError;

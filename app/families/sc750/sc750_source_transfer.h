@@ -21,6 +21,7 @@ public:
     void download(const QByteArray& source);
     void upload();
     void cancel(); // at the next answer
+    bool isCancelled() const { return m_cancelled; }
 
 signals:
     void progress(qint64 done, qint64 total); // total is 0 while uploading (the size is not known)
