@@ -3,6 +3,8 @@
 
 #include "editing/file_types.h"
 
+#include "serialport/network_link.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QTextStream>
@@ -22,8 +24,9 @@ std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
         QStringLiteral("dir"));
     const QCommandLineOption port(
         QStringLiteral("port"),
-        QCoreApplication::translate("app", "Connect to the drive on serial port or pty <path> "
-                                           "instead of the simulator."),
+        QCoreApplication::translate("app", "Connect to the drive on serial port or pty <path>, or on a serial "
+                                           "device server (tcp://HOST:PORT or rfc2217://HOST:PORT), instead "
+                                           "of the simulator."),
         QStringLiteral("path"));
     const QCommandLineOption baud(
         QStringLiteral("baud"), QCoreApplication::translate("app", "Baud rate, 300 to 19200 (default 9600)."),
@@ -66,6 +69,10 @@ std::optional<LaunchOptions> parseCommandLine(const QStringList& arguments) {
             else if (type != FileType::Program && type != FileType::Variables && type != FileType::Capture) continue;
             break;
         }
+    if (const QString problem = serialport::NetworkLink::problem(parser.value(port)); !problem.isEmpty()) {
+        QTextStream(stderr) << "servodesk: " << problem << "\n";
+        return std::nullopt;
+    }
     if (parser.isSet(port)) {
         options.connection.kind = ConnectionChoice::Kind::SerialPort;
         options.connection.portName = parser.value(port);

@@ -1,4 +1,4 @@
-// servodesk-sim: a simulated drive on a new pseudo-terminal (--pty) or on stdin/stdout (--stdio),
+// servodesk-sim: a simulated drive on a new pseudo-terminal (--pty), on stdin/stdout (--stdio) or on a TCP port (--tcp),
 // running in real time until killed. Any serial program (picocom, pyserial, the IDE) can talk to it;
 // --control adds a Unix-domain socket for the bench (inputs, limits, load, motor, power).
 #include "drive_core/drive_factory.h"
@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -24,10 +25,14 @@ void onSignal(int) {
 
 int usage(int code) {
     std::fprintf(code ? stderr : stdout,
-                 "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio) [--speed F] [--control PATH]\n"
-                 "                     [--link PATH] [--overrun]\n"
+                 "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio | --tcp [ADDR:]PORT) [--speed F]\n"
+                 "                     [--control PATH] [--link PATH] [--overrun]\n"
                  "  --pty           create a pseudo-terminal; its path is printed first as \"PTY /dev/pts/N\"\n"
                  "  --stdio         talk on stdin/stdout (a lone LF counts as CR); stops at end of input\n"
+                 "  --tcp [ADDR:]PORT  serve the drive as a serial device server does, on ADDR (default\n"
+                 "                  127.0.0.1) and PORT (0: any free one), printed first as \"TCP ADDR:PORT\";\n"
+                 "                  one client at a time; a client that opens with Telnet negotiation speaks\n"
+                 "                  RFC 2217 (rfc2217://), any other gets the raw bytes (tcp://)\n"
                  "  --speed F       run simulated time F times faster than the wall clock (default 1)\n"
                  "  --link PATH     with --pty: also make PATH a symbolic link to the pty, replacing a stale\n"
                  "                  one, so a client can reconnect by name after a restart\n"
@@ -60,6 +65,8 @@ int main(int argc, char** argv) {
     std::string controlPath;
     std::string linkPath;
     bool overrun = false;
+    std::string tcpAddress = "127.0.0.1";
+    int tcpPort = -1;
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         const bool hasValue = i + 1 < argc;
@@ -77,6 +84,18 @@ int main(int argc, char** argv) {
             linkPath = argv[++i];
         else if (arg == "--overrun")
             overrun = true;
+        else if (arg == "--tcp" && hasValue) {
+            const std::string value = argv[++i];
+            const auto colon = value.rfind(':');
+            if (colon != std::string::npos) tcpAddress = value.substr(0, colon);
+            char* end = nullptr;
+            const std::string port = colon == std::string::npos ? value : value.substr(colon + 1);
+            tcpPort = int(std::strtol(port.c_str(), &end, 10));
+            if (port.empty() || *end != '\0' || tcpPort < 0 || tcpPort > 65535) {
+                std::fprintf(stderr, "servodesk-sim: --tcp %s is not [ADDR:]PORT\n", value.c_str());
+                return usage(2);
+            }
+        }
         else if (arg == "--help" || arg == "-h")
             return usage(0);
         else {
@@ -84,14 +103,14 @@ int main(int argc, char** argv) {
             return usage(2);
         }
     }
-    if (pty == stdio) {
-        std::fprintf(stderr, "servodesk-sim: choose exactly one of --pty and --stdio\n");
+    if (int(pty) + int(stdio) + int(tcpPort >= 0) != 1) {
+        std::fprintf(stderr, "servodesk-sim: choose exactly one of --pty, --stdio and --tcp\n");
         return usage(2);
     }
     const auto family = drive_core::familyFromName(driveName);
     auto drive = family ? drive_core::makeDrive(*family) : nullptr;
     if (!drive) {
-        std::fprintf(stderr, "servodesk-sim: no simulator for drive \"%.*s\" (available: bds5)\n",
+        std::fprintf(stderr, "servodesk-sim: no simulator for drive \"%.*s\" (available: bds5, sc750, pmc960)\n",
                      int(driveName.size()), driveName.data());
         return 2;
     }
@@ -113,7 +132,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "servodesk-sim: %s\n", host.errorText().c_str());
         return 1;
     }
-    if (pty) {
+    if (tcpPort >= 0) {
+        if (!host.listenTcp(tcpAddress, tcpPort)) {
+            std::fprintf(stderr, "servodesk-sim: %s\n", host.errorText().c_str());
+            return 1;
+        }
+        std::printf("TCP %s:%d\n", tcpAddress.c_str(), host.tcpPort());
+        if (!controlPath.empty()) std::printf("CONTROL %s\n", controlPath.c_str());
+        std::fflush(stdout);
+    } else if (pty) {
         const std::string path = host.openPty();
         if (path.empty()) {
             std::fprintf(stderr, "servodesk-sim: %s\n", host.errorText().c_str());

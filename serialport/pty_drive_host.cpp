@@ -30,6 +30,8 @@ PtyDriveHost::~PtyDriveHost() {
     if (m_slaveFd >= 0) ::close(m_slaveFd);
     if (m_masterFd >= 0) ::close(m_masterFd);
     for (const ControlClient& c : m_controlClients) ::close(c.fd);
+    if (m_tcpClientFd >= 0) ::close(m_tcpClientFd);
+    if (m_tcpListenFd >= 0) ::close(m_tcpListenFd);
     if (m_controlFd >= 0) {
         ::close(m_controlFd);
         ::unlink(m_controlPath.c_str());
@@ -136,12 +138,14 @@ int PtyDriveHost::run(const std::atomic<bool>& stop) {
     std::optional<Clock::time_point> eofAt;
     char buffer[4096];
     while (!stop.load()) {
+        serveTcp();
         pollfd fd{m_inFd, POLLIN, 0};
         const int ready = eofAt ? 0 : ::poll(&fd, 1, 1);
         if (ready > 0 && (fd.revents & (POLLIN | POLLHUP))) {
             const ssize_t n = ::read(m_inFd, buffer, sizeof buffer);
             if (n > 0) {
                 std::string bytes(buffer, std::size_t(n));
+                if (m_inFd == m_tcpClientFd) bytes = fromTcp(bytes);
                 if (m_options.lfIsCr) {
                     for (char& c : bytes) {
                         const bool wasCr = std::exchange(m_lastWasCr, c == '\r');
@@ -149,6 +153,8 @@ int PtyDriveHost::run(const std::atomic<bool>& stop) {
                     }
                 }
                 m_drive->receive(bytes);
+            } else if (m_inFd >= 0 && m_inFd == m_tcpClientFd && (n == 0 || (errno != EAGAIN && errno != EINTR))) {
+                dropTcpClient(); // the client went: the drive waits for the next one
             } else if (n == 0 || (errno != EAGAIN && errno != EINTR && errno != EIO)) {
                 eofAt = Clock::now(); // stdin closed: answer what was sent, then stop
             }
@@ -166,7 +172,10 @@ int PtyDriveHost::run(const std::atomic<bool>& stop) {
         }
         if (ticks == kMaxTicksPerWake) simulatedUs = double(m_drive->now().count());
         serveControl();
-        m_backlog += m_drive->takeTransmitted(); // the drive's UART already paces at its BAUD rate
+        // The drive's UART already paces at its BAUD rate; with no TCP client the line has no listener.
+        const std::string sent = m_drive->takeTransmitted();
+        if (m_tcpListenFd < 0) m_backlog += sent;
+        else if (m_tcpClientFd >= 0) m_backlog += m_telnet ? rfc2217::escape(sent) : sent;
         flushOutput();
         if (eofAt && now - *eofAt > kDrainAfterEof) return 0;
     }
@@ -174,8 +183,9 @@ int PtyDriveHost::run(const std::atomic<bool>& stop) {
 }
 
 void PtyDriveHost::flushOutput() {
-    if (m_backlog.empty()) return;
-    const ssize_t written = ::write(m_outFd, m_backlog.data(), m_backlog.size());
+    if (m_backlog.empty() || m_outFd < 0) return;
+    const ssize_t written = m_outFd == m_tcpClientFd ? ::send(m_outFd, m_backlog.data(), m_backlog.size(), MSG_NOSIGNAL)
+                                                     : ::write(m_outFd, m_backlog.data(), m_backlog.size());
     if (written > 0) m_backlog.erase(0, std::size_t(written));
     // EAGAIN: the client is not reading; keep the bytes (a real port would drop them, a pty just fills).
 }

@@ -1,6 +1,8 @@
 // servodesk-cli argument parsing.
 #include "cli_options.h"
 
+#include "serialport/network_link.h"
+
 namespace app::cli {
 
 namespace {
@@ -16,6 +18,8 @@ bool isCommandWord(const QString& w) {
 QString cliUsage() {
     return QStringLiteral(
         "usage: servodesk-cli [--drive bds5|sc750|pmc960] [--port PATH [--baud N] | --sim] COMMAND ...\n"
+        "  --port is a serial port (/dev/ttyUSB0), a pty, or a serial device server: tcp://HOST:PORT (raw)\n"
+        "  or rfc2217://HOST:PORT (the server sets the line to --baud, 8N1)\n"
         "commands (several may follow one another; they run in order on one connection; the same for every\n"
         "family as far as the drive allows):\n"
         "  check FILE                         the family's diagnostics: FILE:LINE:COL: error: message\n"
@@ -69,6 +73,10 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
             if (!v) return std::nullopt;
             o.port = *v;
             o.simulated = false;
+            if (const QString problem = serialport::NetworkLink::problem(o.port); !problem.isEmpty()) {
+                error = problem;
+                return std::nullopt;
+            }
         } else if (a == QLatin1String("--baud")) {
             const auto v = value(a);
             if (!v) return std::nullopt;

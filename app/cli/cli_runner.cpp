@@ -7,7 +7,8 @@
 #include "drive_core/drive_factory.h"
 #include "drive_core/pmc960/pmc960_checker.h"
 #include "drive_core/sc750/sc750_compiler.h"
-#include "serialport/serial_port_link.h"
+#include "serialport/network_link.h"
+#include "serialport/port_link.h"
 #include "serialport/simulator_link.h"
 
 #include <QDir>
@@ -68,10 +69,7 @@ void CliRunner::connectDrive() {
         m_link = std::make_unique<serialport::SimulatorLink>(m_family,
                                                              serialport::SimulatorLink::Options{m_speed, 9600, false});
     } else {
-        // The PMC-960's one-character receive buffer needs RTS/CTS on a real port (seed-pmc960 §4.1).
-        const auto flow = m_family == drive_core::DriveFamily::Pmc960 ? serialport::SerialPortLink::FlowControl::Hardware
-                                                                      : serialport::SerialPortLink::FlowControl::None;
-        m_link = std::make_unique<serialport::SerialPortLink>(m_options.port, m_options.baud, flow);
+        m_link = serialport::makePortLink(m_options.port, m_options.baud, m_family);
     }
     m_session = serialport::makeDriveSession(m_family, *m_link);
     connect(m_session.get(), &serialport::DriveSession::linkFailed, this, [this](const QString& why) { fail(kNoAnswer, why); });

@@ -3,7 +3,7 @@
 
 #include "drive_core/drive_factory.h"
 
-#include "serialport/serial_port_link.h"
+#include "serialport/port_link.h"
 #include "serialport/simulator_link.h"
 
 #include <QCoreApplication>
@@ -37,12 +37,7 @@ void ConnectionChoice::save(QSettings& settings) const {
 }
 
 std::unique_ptr<serialport::Link> ConnectionChoice::makeLink() const {
-    if (kind == Kind::SerialPort) {
-        // The PMC-960 needs RTS/CTS on a real port (its 1-byte receive buffer); the others use three wires.
-        const auto flow = family == drive_core::DriveFamily::Pmc960 ? serialport::SerialPortLink::FlowControl::Hardware
-                                                                   : serialport::SerialPortLink::FlowControl::None;
-        return std::make_unique<serialport::SerialPortLink>(portName, baudRate, flow);
-    }
+    if (kind == Kind::SerialPort) return serialport::makePortLink(portName, baudRate, family);
     return std::make_unique<serialport::SimulatorLink>(
         family, serialport::SimulatorLink::Options{.baudRate = baudRate});
 }

@@ -1,6 +1,10 @@
 // ConnectionDialog: layout, port discovery, settings.
 #include "connection_dialog.h"
 
+#include "theme.h"
+
+#include "serialport/network_link.h"
+
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -17,10 +21,18 @@
 
 namespace app {
 
+namespace {
+QString portHint() {
+    return ConnectionDialog::tr("Pick a port or type any device path, such as a pseudo-terminal from servodesk-sim "
+                                "--pty, or a serial device server: tcp://HOST:PORT (raw) or rfc2217://HOST:PORT "
+                                "(the server sets the line to the baud rate below).");
+}
+} // namespace
+
 ConnectionDialog::ConnectionDialog(QWidget* parent)
     : QDialog(parent), m_family(new QComboBox(this)), m_simulatorNote(new QLabel(this)),
       m_simulator(new QRadioButton(tr("Simulated drive"), this)),
-      m_serial(new QRadioButton(tr("Serial port"), this)), m_port(new QComboBox(this)),
+      m_serial(new QRadioButton(tr("Serial port or device server"), this)), m_port(new QComboBox(this)),
       m_refresh(new QPushButton(tr("Refresh"), this)), m_baud(new QComboBox(this)),
       m_portHint(new QLabel(this)) {
     setObjectName(QStringLiteral("connectionDialog"));
@@ -40,8 +52,11 @@ ConnectionDialog::ConnectionDialog(QWidget* parent)
     m_port->setInsertPolicy(QComboBox::NoInsert);
     m_port->setMinimumContentsLength(24);
     m_port->lineEdit()->setPlaceholderText(QStringLiteral("/dev/ttyUSB0"));
-    m_portHint->setText(tr("Pick a port or type any device path, such as a pseudo-terminal from "
-                           "servodesk-sim --pty."));
+    m_portHint->setText(portHint());
+    connect(m_port, &QComboBox::editTextChanged, this, [this] { // a new text: the hint, not the last complaint
+        Theme::showStatus(*m_portHint, portHint(), false);
+        m_portHint->setEnabled(false);
+    });
     m_portHint->setWordWrap(true);
     m_portHint->setEnabled(false);
     auto* portRow = new QHBoxLayout;
@@ -117,6 +132,13 @@ void ConnectionDialog::accept() {
     if (c.kind == ConnectionChoice::Kind::SerialPort && c.portName.isEmpty()) {
         m_port->setFocus();
         return; // nothing to open yet
+    }
+    if (const QString problem = serialport::NetworkLink::problem(c.portName);
+        c.kind == ConnectionChoice::Kind::SerialPort && !problem.isEmpty()) {
+        m_portHint->setEnabled(true);
+        Theme::showStatus(*m_portHint, problem, true);
+        m_port->setFocus();
+        return; // the dialog stays with the typed text
     }
     QSettings settings;
     c.save(settings);

@@ -11,6 +11,9 @@
 //   5  the Pmc960Session response reader under a running Pmc960Download: prompt detection, #xx decoding,
 //      poll answers and the <attn>h checksum answer, in chunks split at 0xFF with commands, polls, editor
 //      lines, typed bytes and resynchronisation between chunks
+//   6  the RFC 2217 server of servodesk-sim --tcp (issue 21): a device-server client's Telnet stream, in chunks
+//      of 1, 7, 3 and 16 bytes in turn (every byte value means something to Telnet); the server's answers must be commands only (no data), answer each option at most once
+//      per change, and the data it passes must survive escape() and a second decode unchanged
 // The same file is the body of host_parsers_fuzz_replay, which runs the corpus in every CTest build.
 #include "serialport/bds5_program_text.h"
 #include "serialport/bds5_protocol.h"
@@ -19,11 +22,13 @@
 #include "serialport/link.h"
 #include "serialport/pmc960_download.h"
 #include "serialport/pmc960_session.h"
+#include "serialport/rfc2217.h"
 #include "serialport/sc750_download.h"
 #include "serialport/sc750_session.h"
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -200,6 +205,29 @@ void fuzzPmc960(const QByteArray& stream) {
     if (link.written() > 64 * (stream.size() + 16)) fail("the PMC-960 session wrote out of proportion");
 }
 
+void fuzzRfc2217(const QByteArray& stream) {
+    using namespace serialport::rfc2217;
+    Server server;
+    std::string passed;
+    std::size_t replied = 0;
+    const std::size_t sizes[] = {1, 7, 3, 16};
+    for (std::size_t at = 0, n = 0; at < std::size_t(stream.size()); at += sizes[n++ % 4]) {
+        const std::size_t length = std::min(sizes[n % 4], std::size_t(stream.size()) - at);
+        std::string reply;
+        passed += server.feed(std::string_view(stream.constData() + at, length), reply);
+        Decoder check;
+        std::vector<Decoder::Command> commands;
+        if (!check.feed(reply, commands).empty()) fail("the RFC 2217 server answered with data");
+        replied += reply.size();
+    }
+    // Each answer is at most a subnegotiation as long as the one it answers, or one option for three bytes.
+    if (replied > 8 * (std::size_t(stream.size()) + 4)) fail("the RFC 2217 server answered out of proportion");
+    if (passed.size() > std::size_t(stream.size())) fail("the RFC 2217 server passed more data than it got");
+    Decoder again;
+    std::vector<Decoder::Command> none;
+    if (again.feed(escape(passed), none) != passed || !none.empty()) fail("escaped data did not decode to itself");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -209,13 +237,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static QCoreApplication app(argc, argv);
     if (size == 0 || size > (1u << 16)) return 0;
     const QByteArray rest(reinterpret_cast<const char*>(data) + 1, qsizetype(size - 1));
-    switch (data[0] % 6) {
+    switch (data[0] % 7) {
     case 0: fuzzSession(rest); break;
     case 1: fuzzVariableFile(QString::fromLatin1(rest)); break;
     case 2: fuzzProgramText(QString::fromLatin1(rest)); break;
     case 3: fuzzLines(QString::fromLatin1(rest)); break;
     case 4: fuzzSc750(rest); break;
-    default: fuzzPmc960(rest); break;
+    case 5: fuzzPmc960(rest); break;
+    default: fuzzRfc2217(rest); break;
     }
     return 0;
 }
