@@ -11,31 +11,38 @@
 
 namespace drive_core {
 
+namespace {
+struct FamilyNames {
+    DriveFamily family;
+    std::string_view key;   // "bds5": command lines, settings, file names
+    std::string_view title; // "BDS5": the nameplate
+};
+constexpr FamilyNames kFamilies[] = {
+    {DriveFamily::Bds5, "bds5", "BDS5"},
+    {DriveFamily::Sc750, "sc750", "SC750"},
+    {DriveFamily::Pmc960, "pmc960", "PMC-960"},
+};
+const FamilyNames& names(DriveFamily family) {
+    for (const FamilyNames& f : kFamilies)
+        if (f.family == family) return f;
+    return kFamilies[0];
+}
+} // namespace
+
 std::optional<DriveFamily> familyFromName(std::string_view name) {
     std::string lower(name);
     std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (lower == "bds5") return DriveFamily::Bds5;
-    if (lower == "sc750") return DriveFamily::Sc750;
-    if (lower == "pmc960") return DriveFamily::Pmc960;
+    for (const FamilyNames& f : kFamilies)
+        if (lower == f.key) return f.family;
     return std::nullopt;
 }
 
 std::string_view familyName(DriveFamily family) {
-    switch (family) {
-    case DriveFamily::Bds5: return "bds5";
-    case DriveFamily::Sc750: return "sc750";
-    case DriveFamily::Pmc960: return "pmc960";
-    }
-    return "bds5";
+    return names(family).key;
 }
 
 std::string_view familyTitle(DriveFamily family) {
-    switch (family) {
-    case DriveFamily::Bds5: return "BDS5";
-    case DriveFamily::Sc750: return "SC750";
-    case DriveFamily::Pmc960: return "PMC-960";
-    }
-    return "BDS5";
+    return names(family).title;
 }
 
 std::unique_ptr<Drive> makeDrive(DriveFamily family) {

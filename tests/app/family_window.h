@@ -11,6 +11,7 @@
 
 #include "editor/program_editor.h"
 
+#include <QFile>
 #include <QToolBar>
 #include <QToolButton>
 
@@ -44,6 +45,14 @@ inline app::Sc750Workspace& connectSc750WithProgram(app::MainWindow& window, con
     newBasProgram(ws, text);
     return ws;
 }
+
+#ifdef SC750_EXAMPLES
+// One of the SC750 manual's example programs (tests/drive_core/sc750/examples); "" when it is missing.
+inline QString sc750Example(const char* name) {
+    QFile file(QStringLiteral(SC750_EXAMPLES "/") + QLatin1String(name));
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+}
+#endif
 
 // The buttons of the toolbars the window shows, in order, as their text reads ("Run Program", "Stop").
 inline QStringList toolBarButtons(const app::MainWindow& window) {

@@ -49,8 +49,7 @@ namespace {
 constexpr int kTimeoutMs = 20000;
 
 QString example(const char* name) {
-    QFile file(QStringLiteral(SC750_EXAMPLES "/") + QLatin1String(name));
-    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    return family_window::sc750Example(name);
 }
 
 bool menuVisible(const MainWindow& window, const QString& title) {

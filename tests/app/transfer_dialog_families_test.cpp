@@ -33,8 +33,7 @@ namespace {
 constexpr int kTimeoutMs = 20000;
 
 QString example(const char* name) {
-    QFile file(QStringLiteral(SC750_EXAMPLES "/") + QLatin1String(name));
-    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    return family_window::sc750Example(name);
 }
 
 // A 60-line MPL routine: long enough to be caught part way.
@@ -60,6 +59,13 @@ std::function<void()> prepare(MainWindow& window, const QString& which) {
         return [&ws] { ws.action(QStringLiteral("Run Program"))->trigger(); };
     return [&ws] { qobject_cast<app::Sc750ControllerMenu*>(ws.menus().at(1))->downloadSource(); };
 }
+// The download started as the user starts it, and the progress window it opened (nullptr when none).
+TransferDialog* startTransfer(MainWindow& window, const QString& which) {
+    const auto start = prepare(window, which);
+    if (!start) return nullptr;
+    start();
+    return TransferDialog::active();
+}
 } // namespace
 
 class TransferDialogFamiliesTest : public QObject {
@@ -79,10 +85,7 @@ private slots:
         QFETCH(QString, title);
         MainWindow window;
         window.show();
-        const auto start = prepare(window, which);
-        QVERIFY(start);
-        start();
-        QPointer<TransferDialog> dialog = TransferDialog::active();
+        QPointer<TransferDialog> dialog = startTransfer(window, which);
         QVERIFY(dialog);
         QCOMPARE(dialog->windowTitle(), title);
         QVERIFY(dialog->isVisible());
@@ -108,10 +111,7 @@ private slots:
         QFETCH(QString, result);
         MainWindow window;
         window.show();
-        const auto start = prepare(window, which);
-        QVERIFY(start);
-        start();
-        QPointer<TransferDialog> dialog = TransferDialog::active();
+        QPointer<TransferDialog> dialog = startTransfer(window, which);
         QVERIFY(dialog);
         auto* buttons = dialog->findChild<QDialogButtonBox*>();
         QVERIFY(buttons);
