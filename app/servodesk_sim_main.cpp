@@ -2,9 +2,11 @@
 // running in real time until killed. Any serial program (picocom, pyserial, the IDE) can talk to it;
 // --control adds a Unix-domain socket for the bench (inputs, limits, load, motor, power).
 #include "drive_core/drive_factory.h"
+#include "drive_core/multidrop_bus.h"
 #include "drive_core/pmc960/pmc960_drive.h"
 #include "serialport/pty_drive_host.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 #include <unistd.h>
 
 namespace {
@@ -26,7 +29,7 @@ void onSignal(int) {
 int usage(int code) {
     std::fprintf(code ? stderr : stdout,
                  "usage: servodesk-sim [--drive bds5|sc750|pmc960] (--pty | --stdio | --tcp [ADDR:]PORT) [--speed F]\n"
-                 "                     [--control PATH] [--link PATH] [--overrun]\n"
+                 "                     [--axes ID,ID,...] [--control PATH] [--link PATH] [--overrun]\n"
                  "  --pty           create a pseudo-terminal; its path is printed first as \"PTY /dev/pts/N\"\n"
                  "  --stdio         talk on stdin/stdout (a lone LF counts as CR); stops at end of input\n"
                  "  --tcp [ADDR:]PORT  serve the drive as a serial device server does, on ADDR (default\n"
@@ -34,6 +37,10 @@ int usage(int code) {
                  "                  one client at a time; a client that opens with Telnet negotiation speaks\n"
                  "                  RFC 2217 (rfc2217://), any other gets the raw bytes (tcp://)\n"
                  "  --speed F       run simulated time F times faster than the wall clock (default 1)\n"
+                 "  --axes ID,...   bds5: a multidrop bus of up to 32 drives on the one line, each with ADDR = its\n"
+                 "                  ID (0-9, A-Z), all asleep at power-up: \\ + ID wakes one, \\ alone puts all to\n"
+                 "                  sleep, \\* broadcasts; only the woken axis answers. --control reaches the\n"
+                 "                  first axis until \"axis ID\" picks another\n"
                  "  --link PATH     with --pty: also make PATH a symbolic link to the pty, replacing a stale\n"
                  "                  one, so a client can reconnect by name after a restart\n"
                  "  --overrun       pmc960 only: the controller's one-character receive buffer overruns as\n"
@@ -67,6 +74,7 @@ int main(int argc, char** argv) {
     bool overrun = false;
     std::string tcpAddress = "127.0.0.1";
     int tcpPort = -1;
+    std::vector<std::string> axes;
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         const bool hasValue = i + 1 < argc;
@@ -84,6 +92,14 @@ int main(int argc, char** argv) {
             linkPath = argv[++i];
         else if (arg == "--overrun")
             overrun = true;
+        else if (arg == "--axes" && hasValue) {
+            std::string list = argv[++i];
+            for (std::size_t at = 0; at <= list.size();) {
+                const std::size_t comma = std::min(list.find(',', at), list.size());
+                axes.push_back(list.substr(at, comma - at));
+                at = comma + 1;
+            }
+        }
         else if (arg == "--tcp" && hasValue) {
             const std::string value = argv[++i];
             const auto colon = value.rfind(':');
@@ -108,7 +124,17 @@ int main(int argc, char** argv) {
         return usage(2);
     }
     const auto family = drive_core::familyFromName(driveName);
-    auto drive = family ? drive_core::makeDrive(*family) : nullptr;
+    std::unique_ptr<drive_core::Drive> drive;
+    if (family && !axes.empty()) {
+        std::string why;
+        drive = drive_core::MultidropBus::make(*family, axes, why);
+        if (!drive) {
+            std::fprintf(stderr, "servodesk-sim: --axes: %s\n", why.c_str());
+            return 2;
+        }
+    } else if (family) {
+        drive = drive_core::makeDrive(*family);
+    }
     if (!drive) {
         std::fprintf(stderr, "servodesk-sim: no simulator for drive \"%.*s\" (available: bds5, sc750, pmc960)\n",
                      int(driveName.size()), driveName.data());

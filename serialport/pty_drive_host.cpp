@@ -1,6 +1,8 @@
 // Real-time pty host for a simulated drive.
 #include "pty_drive_host.h"
 
+#include "drive_core/multidrop_bus.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -80,9 +82,16 @@ void PtyDriveHost::serveControl() {
             std::string line = it->pending.substr(0, end);
             it->pending.erase(0, end + 1);
             if (!line.empty() && line.back() == '\r') line.pop_back();
-            drive_core::SimulatorControls* controls = m_drive->controls();
-            std::string answer = controls ? drive_core::runSimulatorCommand(*controls, line)
-                                          : std::string("ERROR this drive has no simulator controls");
+            std::string answer;
+            auto* bus = dynamic_cast<drive_core::MultidropBus*>(m_drive.get());
+            if (line.rfind("axis ", 0) == 0) { // which axis of a bus the bench reaches
+                answer = bus && bus->setBenchAxis(line.substr(5)) ? std::string("OK")
+                                                                  : "ERROR no axis " + line.substr(5) + " on this line";
+            } else {
+                drive_core::SimulatorControls* controls = m_drive->controls();
+                answer = controls ? drive_core::runSimulatorCommand(*controls, line)
+                                  : std::string("ERROR this drive has no simulator controls");
+            }
             answer += '\n';
             // Answers are short; a client that does not read them loses them rather than stalling the drive.
             [[maybe_unused]] const ssize_t written = ::send(it->fd, answer.data(), answer.size(), MSG_NOSIGNAL);

@@ -472,6 +472,10 @@ bool Bds5Drive::chooseBaudRate() {
     return valid;
 }
 
+void Bds5Drive::setAddress(char id) {
+    m_state.variables.set("ADDR", std::int32_t(static_cast<unsigned char>(id)));
+}
+
 // ADDR 48-57 ('0'-'9') or 65-90 ('A'-'Z') is this axis' multidrop ID; 0 is single-drop (L5416-5424).
 std::optional<char> Bds5Drive::addressId() const {
     static const auto ref = *catalog::bds5::findVariable("ADDR"); // read for every prompt

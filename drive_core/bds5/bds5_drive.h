@@ -32,6 +32,9 @@ public:
 
     DriveFamily family() const override { return DriveFamily::Bds5; }
     void powerUp() override;
+    // ADDR as kept in the drive's memory ('0'-'9', 'A'-'Z'; 0 for single-drop), as a machine builder sets each
+    // axis of a multidrop line once: the next power-up starts in multidrop mode, asleep (L5416-5451).
+    void setAddress(char id);
     void receive(std::string_view bytes) override;
     std::string takeTransmitted() override;
     void step(Microseconds dt) override;

@@ -40,6 +40,12 @@ Bds5Port::Verdict Bds5Port::accept(char c, Microseconds now) {
             m_asleep = false;
             return Verdict::Drop;
         }
+        if (c == '\\') { // "\\": the first puts every axis to sleep, the second starts a new attention
+            m_asleep = true;
+            m_broadcast = false;
+            m_afterBackslash = true;
+            return Verdict::Drop;
+        }
         const bool mine = c == *m_axis;
         m_asleep = !mine;
         m_broadcast = false;

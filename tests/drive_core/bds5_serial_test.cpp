@@ -70,6 +70,17 @@ TEST(Bds5Serial, MultidropAxisSleepsUntilCalled) { // L5430-5449, L10015-10028
     EXPECT_EQ(t.type("P 6*7\r"), "P 6*7\r\n          42\r\nA->") << "a '*' not after '\\' is no broadcast";
 }
 
+// "A backslash puts ALL drives on the serial line to sleep" (L5449): a second backslash right after it is not
+// an axis ID but a new attention: two backslashes and a star are sleep-all, then broadcast, as a host that
+// clears the line first sends them.
+TEST(Bds5Serial, ABackslashAfterABackslashStartsANewAttention) {
+    TestDrive t;
+    t.type("ADDR=65\r");
+    EXPECT_EQ(t.type("\\\\*X2=6\r"), "") << "broadcast: executes, does not answer";
+    EXPECT_EQ(t.type("\\\\A"), "\r\nA->");
+    EXPECT_EQ(t.type("P X2\r"), "P X2\r\n           6\r\nA->");
+}
+
 // "Setting ADDR to 65 makes this axis address "A" and automatically puts the BDS5 in Multidrop mode. This
 // axis then waits for the "\A."" (L5449-5451): the echo of the line, then nothing, not even a prompt,
 // until the host calls the new ID; what is typed meanwhile reaches an axis that does not listen.

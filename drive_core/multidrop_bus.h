@@ -1,0 +1,61 @@
+// MultidropBus: up to 32 simulated drives of one family on one RS-485 line (issue 21), itself a Drive, so a
+// pty, a TCP port or the IDE's SimulatorLink carries a whole bus as it carries one drive. Every axis hears
+// every byte; each decides by its own manual's addressing whether it is spoken to, and only an addressed
+// axis transmits (the electrical rule of a multidrop line: BDS5 L5416-5469, L10013-10038). Axes share the
+// bus's time. The bench (inputs, load, motor) is one axis's at a time: benchAxis().
+//
+// BDS5: each axis's ADDR is its ID ('0'-'9', 'A'-'Z'), kept in the drive's memory as a machine builder sets
+// it once, so each powers up asleep; '\' + ID wakes one, '\' alone puts all to sleep, '\*' broadcasts (all
+// execute, none transmit). The SC750's and the PMC-960's addressing are not on the bus yet: make() says so.
+#pragma once
+
+#include "drive.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace drive_core {
+
+class MultidropBus final : public Drive {
+public:
+    static constexpr std::size_t kMaxAxes = 32;
+
+    // A bus of one axis per ID, in order; nullptr with why set when the family or an ID cannot be on a bus
+    // (BDS5 IDs: one character each of 0-9 and A-Z, no repeats; at most 32).
+    static std::unique_ptr<MultidropBus> make(DriveFamily family, const std::vector<std::string>& ids, std::string& why);
+
+    DriveFamily family() const override { return m_family; }
+    void powerUp() override;
+    void receive(std::string_view bytes) override;
+    std::string takeTransmitted() override;
+    void step(Microseconds dt) override;
+    Microseconds now() const override;
+    void setLineRateLimited(bool limited) override;
+
+    // The bench axis's pins and controls.
+    int inputCount() const override { return bench().inputCount(); }
+    int outputCount() const override { return bench().outputCount(); }
+    void setInput(int number, bool on) override { bench().setInput(number, on); }
+    bool input(int number) const override { return bench().input(number); }
+    bool output(int number) const override { return bench().output(number); }
+    SimulatorControls* controls() override { return bench().controls(); }
+
+    std::size_t axisCount() const { return m_axes.size(); }
+    const std::string& id(std::size_t axis) const { return m_ids[axis]; }
+    Drive& axis(std::size_t axis) { return *m_axes[axis]; }
+    // Which axis the bench's pins and controls reach (the first at first); false for an unknown ID.
+    bool setBenchAxis(const std::string& id);
+    std::size_t benchAxis() const { return m_bench; }
+
+private:
+    MultidropBus(DriveFamily family, std::vector<std::string> ids, std::vector<std::unique_ptr<Drive>> axes);
+    Drive& bench() const { return *m_axes[m_bench]; }
+
+    DriveFamily m_family;
+    std::vector<std::string> m_ids;
+    std::vector<std::unique_ptr<Drive>> m_axes;
+    std::size_t m_bench = 0;
+};
+
+} // namespace drive_core

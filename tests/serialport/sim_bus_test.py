@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""servodesk-sim --axes (issue 21): four simulated BDS5s on one multidrop line behind a pty, with a client
+nobody here wrote (pyserial). As the manual's multidrop section has it (L5416-5469, L10013-10038): all asleep
+at power-up, '\\' + ID wakes one and only it answers, each axis keeps its own variables, a broadcast reaches
+every axis and none answers it; the bench's socket picks the axis it reaches."""
+import os
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+import serial  # Debian's python3-serial
+
+
+def read_until(port, marker, timeout_s=30.0):
+    data = b""
+    deadline = time.monotonic() + timeout_s
+    while marker not in data and time.monotonic() < deadline:
+        data += port.read(1)
+    if marker not in data:
+        raise AssertionError(f"did not see {marker!r}; got {data!r}")
+    return data
+
+
+def bench(path, line):
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as s:
+        s.settimeout(30)
+        s.connect(path)
+        s.sendall(line.encode() + b"\n")
+        answer = b""
+        while not answer.endswith(b"\n"):
+            answer += s.recv(256)
+        return answer.decode().strip()
+
+
+def main(sim):
+    control = os.path.join(tempfile.mkdtemp(), "bench")
+    proc = subprocess.Popen([sim, "--drive", "bds5", "--axes", "A,B,C,D", "--pty", "--control", control],
+                            stdout=subprocess.PIPE)
+    passed = 0
+    try:
+        first = proc.stdout.readline().decode().strip()
+        assert first.startswith("PTY /dev/"), first
+        with serial.Serial(first[4:], 9600, timeout=0.2) as port:
+            # Asleep at power-up: the CR gets nothing, so B's prompt is the first thing on the line.
+            port.write(b"\r\\B")
+            assert read_until(port, b"B->") == b"\r\nB->"
+            passed += 1
+            port.write(b"X1=5\r")
+            assert read_until(port, b"\r\nB->") == b"X1=5\r\nB->"
+            port.write(b"\\A")
+            assert read_until(port, b"A->") == b"\r\nA->"
+            port.write(b"P X1\r")
+            answer = read_until(port, b"\r\nA->")
+            assert answer == b"P X1\r\n           0\r\nA->", answer  # A is another drive
+            passed += 1
+            # '\\' puts every axis to sleep, '\\*' broadcasts: all execute, none answers.
+            port.write(b"\\\\*X2=7\r\\D")
+            assert read_until(port, b"D->") == b"\r\nD->"
+            port.write(b"P X2\r")
+            answer = read_until(port, b"\r\nD->")
+            assert answer == b"P X2\r\n           7\r\nD->", answer
+            passed += 1
+            # The bench reaches the axis picked: C's input 1, read by C and not by D.
+            assert bench(control, "axis C") == "OK"
+            assert bench(control, "input 1 on") == "OK"
+            port.write(b"P I1\r")
+            assert read_until(port, b"\r\nD->") == b"P I1\r\n           0\r\nD->"
+            port.write(b"\\C")
+            read_until(port, b"C->")
+            port.write(b"P I1\r")
+            assert read_until(port, b"\r\nC->") == b"P I1\r\n           1\r\nC->"
+            assert bench(control, "axis Q").startswith("ERROR")
+            passed += 1
+    finally:
+        proc.terminate()
+        proc.wait(5)
+    print(f"sim --axes: {passed} passed, 0 failed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
