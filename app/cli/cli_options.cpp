@@ -17,9 +17,10 @@ bool isCommandWord(const QString& w) {
 
 QString cliUsage() {
     return QStringLiteral(
-        "usage: servodesk-cli [--drive bds5|sc750|pmc960] [--port PATH [--baud N] | --sim] COMMAND ...\n"
+        "usage: servodesk-cli [--drive bds5|sc750|pmc960] [--port PATH [--baud N] [--axis ID] | --sim] COMMAND ...\n"
         "  --port is a serial port (/dev/ttyUSB0), a pty, or a serial device server: tcp://HOST:PORT (raw)\n"
         "  or rfc2217://HOST:PORT (the server sets the line to --baud, 8N1)\n"
+        "  --axis ID talks to one axis of a BDS5 multidrop line (woken with \\ and ID; 0-9, A-Z)\n"
         "commands (several may follow one another; they run in order on one connection; the same for every\n"
         "family as far as the drive allows):\n"
         "  check FILE                         the family's diagnostics: FILE:LINE:COL: error: message\n"
@@ -75,6 +76,15 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
             o.simulated = false;
             if (const QString problem = serialport::NetworkLink::problem(o.port); !problem.isEmpty()) {
                 error = problem;
+                return std::nullopt;
+            }
+        } else if (a == QLatin1String("--axis")) {
+            const auto v = value(a);
+            if (!v) return std::nullopt;
+            o.axis = v->toUpper();
+            // BDS5 IDs (L5416-5424); the other families' buses follow with their own addressing.
+            if (o.axis.size() != 1 || !(o.axis[0].isDigit() || (o.axis[0] >= u'A' && o.axis[0] <= u'Z'))) {
+                error = QStringLiteral("--axis %1 is not an axis ID (one of 0-9 and A-Z)").arg(*v);
                 return std::nullopt;
             }
         } else if (a == QLatin1String("--baud")) {

@@ -30,6 +30,7 @@ struct CliOptions {
     bool simulated = true; // --sim (the default) or --port
     QString port;
     int baud = 9600;
+    QString axis; // --axis ID: the axis of a multidrop line to talk to ("" for a single drive)
     std::vector<CliCommand> commands;
     bool help = false;
 };

@@ -47,6 +47,12 @@ CliRunner::~CliRunner() {
 void CliRunner::start() {
     if (!drive_core::familyFromName(m_options.drive.toStdString()))
         return fail(kUsage, QStringLiteral("unknown drive \"%1\" (bds5, sc750 or pmc960)").arg(m_options.drive));
+    if (!m_options.axis.isEmpty() && m_options.simulated)
+        return fail(kUsage, QStringLiteral("--axis needs --port: the simulated drive of --sim is a single drive "
+                                           "(servodesk-sim --axes serves a multidrop line)"));
+    if (!m_options.axis.isEmpty() && m_family != drive_core::DriveFamily::Bds5)
+        return fail(kUsage, QStringLiteral("--axis is for a BDS5 multidrop line; the %1's addressing is not supported yet")
+                                .arg(familyDisplayName(m_family)));
     if (!watchNamesKnown()) return;
     for (const CliCommand& c : m_options.commands) {
         if (!needsDrive(c)) continue;
@@ -81,11 +87,20 @@ void CliRunner::connectDrive() {
     });
     connect(&m_deadline, &QTimer::timeout, this, [this] {
         if (m_following) return;
-        fail(kNoAnswer, QStringLiteral("no answer from the %1 on %2 within %3 s")
-                            .arg(familyDisplayName(m_family), m_link->description())
+        const QString who = m_options.axis.isEmpty()
+                                ? QStringLiteral("the %1").arg(familyDisplayName(m_family))
+                                : QStringLiteral("axis %1 of the %2 line (is a drive's ADDR %1?)")
+                                      .arg(m_options.axis, familyDisplayName(m_family));
+        fail(kNoAnswer, QStringLiteral("no answer from %1 on %2 within %3 s")
+                            .arg(who, m_link->description())
                             .arg(kConnectTimeoutMs / 1000));
     });
     m_deadline.start(kConnectTimeoutMs);
+    // On a multidrop line every axis sleeps until '\' and its ID wake it (L5449-5451); its prompt makes the
+    // session ready.
+    if (!m_options.axis.isEmpty())
+        connect(m_link.get(), &serialport::Link::opened, this,
+                [this] { m_link->write("\\" + m_options.axis.toLatin1()); });
     m_link->open();
 }
 

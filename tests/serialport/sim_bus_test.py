@@ -2,7 +2,8 @@
 """servodesk-sim --axes (issue 21): four simulated BDS5s on one multidrop line behind a pty, with a client
 nobody here wrote (pyserial). As the manual's multidrop section has it (L5416-5469, L10013-10038): all asleep
 at power-up, '\\' + ID wakes one and only it answers, each axis keeps its own variables, a broadcast reaches
-every axis and none answers it; the bench's socket picks the axis it reaches."""
+every axis and none answers it; the bench's socket picks the axis it reaches; servodesk-cli --axis talks to
+one axis."""
 import os
 import socket
 import subprocess
@@ -34,7 +35,7 @@ def bench(path, line):
         return answer.decode().strip()
 
 
-def main(sim):
+def main(sim, cli_path):
     control = os.path.join(tempfile.mkdtemp(), "bench")
     proc = subprocess.Popen([sim, "--drive", "bds5", "--axes", "A,B,C,D", "--pty", "--control", control],
                             stdout=subprocess.PIPE)
@@ -73,6 +74,16 @@ def main(sim):
             assert read_until(port, b"\r\nC->") == b"P I1\r\n           1\r\nC->"
             assert bench(control, "axis Q").startswith("ERROR")
             passed += 1
+        # servodesk-cli --axis wakes the axis it names and talks to it alone; an ID not on the line is said.
+        def cli(*args):
+            return subprocess.run([cli_path, "--port", first[4:], *args], capture_output=True, text=True, timeout=120)
+        out = cli("--axis", "A", "send", "P X1")
+        assert out.returncode == 0 and out.stdout.split() == ["0"], (out.returncode, out.stdout, out.stderr)
+        out = cli("--axis", "B", "send", "P X1", "X3=9")
+        assert out.returncode == 0 and out.stdout.split() == ["5"], (out.returncode, out.stdout, out.stderr)
+        out = cli("--axis", "Q", "send", "P X1")
+        assert out.returncode == 3 and "axis Q" in out.stderr, (out.returncode, out.stderr)
+        passed += 1
     finally:
         proc.terminate()
         proc.wait(5)
@@ -81,4 +92,4 @@ def main(sim):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1]))
+    sys.exit(main(sys.argv[1], sys.argv[2]))
