@@ -9,19 +9,12 @@ import socket
 import subprocess
 import sys
 import tempfile
-import time
 
 import serial  # Debian's python3-serial
 
+from sim_client import read_until, simulator
 
-def read_until(port, marker, timeout_s=30.0):
-    data = b""
-    deadline = time.monotonic() + timeout_s
-    while marker not in data and time.monotonic() < deadline:
-        data += port.read(1)
-    if marker not in data:
-        raise AssertionError(f"did not see {marker!r}; got {data!r}")
-    return data
+
 
 
 def bench(path, line):
@@ -37,11 +30,8 @@ def bench(path, line):
 
 def main(sim, cli_path):
     control = os.path.join(tempfile.mkdtemp(), "bench")
-    proc = subprocess.Popen([sim, "--drive", "bds5", "--axes", "A,B,C,D", "--pty", "--control", control],
-                            stdout=subprocess.PIPE)
     passed = 0
-    try:
-        first = proc.stdout.readline().decode().strip()
+    with simulator(sim, "--drive", "bds5", "--axes", "A,B,C,D", "--pty", "--control", control) as first:
         assert first.startswith("PTY /dev/"), first
         with serial.Serial(first[4:], 9600, timeout=0.2) as port:
             # Asleep at power-up: the CR gets nothing, so B's prompt is the first thing on the line.
@@ -84,9 +74,6 @@ def main(sim, cli_path):
         out = cli("--axis", "Q", "send", "P X1")
         assert out.returncode == 3 and "axis Q" in out.stderr, (out.returncode, out.stderr)
         passed += 1
-    finally:
-        proc.terminate()
-        proc.wait(5)
     print(f"sim --axes: {passed} passed, 0 failed")
     return 0
 

@@ -10,17 +10,9 @@ import time
 
 import serial  # Debian's python3-serial
 
+from sim_client import read_until, simulator
 
-# Real time over the loopback: generous bounds (the simulator may get a sliver of a loaded machine); a pass
-# takes milliseconds.
-def read_until(port, marker, timeout_s=30.0):
-    data = b""
-    deadline = time.monotonic() + timeout_s
-    while marker not in data and time.monotonic() < deadline:
-        data += port.read(1)
-    if marker not in data:
-        raise AssertionError(f"did not see {marker!r}; got {data!r}")
-    return data
+
 
 
 def talk(port):
@@ -38,10 +30,8 @@ def talk(port):
 
 
 def main(sim, cli):
-    proc = subprocess.Popen([sim, "--drive", "bds5", "--tcp", "0"], stdout=subprocess.PIPE)
     passed = 0
-    try:
-        first = proc.stdout.readline().decode().strip()
+    with simulator(sim, "--drive", "bds5", "--tcp", "0") as first:
         assert first.startswith("TCP 127.0.0.1:"), first
         port_number = int(first.rsplit(":", 1)[1])
         # RFC 2217: pyserial's open() fails unless the server negotiates the option and accepts 9600 8N1.
@@ -79,9 +69,6 @@ def main(sim, cli):
                              timeout=60)
         assert out.returncode == 2 and "tcp://HOST:PORT" in out.stderr, (out.returncode, out.stderr)
         passed += 1
-    finally:
-        proc.terminate()
-        proc.wait(5)
     print(f"sim --tcp: {passed} passed, 0 failed")
     return 0
 
