@@ -10,7 +10,7 @@ bool isCommandWord(const QString& w) {
     static const QStringList kWords{QStringLiteral("check"),  QStringLiteral("compile"), QStringLiteral("download"),
                                     QStringLiteral("upload"), QStringLiteral("vars"),    QStringLiteral("send"),
                                     QStringLiteral("run"),    QStringLiteral("stop"),    QStringLiteral("record"),
-                                    QStringLiteral("watch")};
+                                    QStringLiteral("watch"),  QStringLiteral("machine")};
     return kWords.contains(w);
 }
 } // namespace
@@ -45,6 +45,10 @@ QString cliUsage() {
         "                                     each row stamped when it was read (BDS5: P; SC750: G frames, e.g.\n"
         "                                     POSITION,VELOCITY; PMC-960: status polls G,SF,V,I); --sim then\n"
         "                                     runs the drive in real time\n"
+        "  machine scan [--ids LIST] [--wait MS]\n"
+        "                                     BDS5 multidrop line: call each ID (all of 0-9, A-Z, or LIST) and\n"
+        "                                     print one line per axis that answers: ID, family, mode, prompt;\n"
+        "                                     an ID silent for MS ms (default 100) is taken as absent. Alone\n"
         "The default connection is --sim --drive bds5: a fresh simulated drive, faster than real time.\n"
         "Exit status: 0 success, 1 a drive error, mismatch or diagnostic, 2 bad usage, 3 no drive answer.\n");
 }
@@ -118,6 +122,22 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
             }
             c.kind = rest[0] == QLatin1String("dump") ? CliCommand::Kind::VarsDump : CliCommand::Kind::VarsSend;
             c.args = {rest[1]};
+        } else if (word == QLatin1String("machine")) {
+            if (rest.value(0) != QLatin1String("scan")) {
+                error = QStringLiteral("machine needs \"scan\" (backup, compare and restore are still to come)");
+                return std::nullopt;
+            }
+            c.kind = CliCommand::Kind::MachineScan;
+            for (int k = 1; k < rest.size(); ++k) {
+                bool ok = true;
+                if (rest[k] == QLatin1String("--ids") && k + 1 < rest.size()) c.scanIds = rest[++k].remove(u',').toUpper();
+                else if (rest[k] == QLatin1String("--wait") && k + 1 < rest.size()) c.scanWaitMs = rest[++k].toInt(&ok);
+                else ok = false;
+                if (!ok || c.scanWaitMs < 1) {
+                    error = QStringLiteral("machine scan takes --ids LIST and --wait MS, not \"%1\"").arg(rest[k]);
+                    return std::nullopt;
+                }
+            }
         } else if (word == QLatin1String("run")) {
             c.kind = CliCommand::Kind::Run;
             for (int k = 0; k < rest.size(); ++k) {

@@ -54,6 +54,9 @@ void CliRunner::start() {
         return fail(kUsage, QStringLiteral("--axis is for a BDS5 multidrop line; the %1's addressing is not supported yet")
                                 .arg(familyDisplayName(m_family)));
     if (!watchNamesKnown()) return;
+    if (std::any_of(m_options.commands.begin(), m_options.commands.end(),
+                    [](const CliCommand& c) { return c.kind == CliCommand::Kind::MachineScan; }))
+        return machineScan(m_options.commands.front());
     for (const CliCommand& c : m_options.commands) {
         if (!needsDrive(c)) continue;
         return connectDrive();
@@ -119,6 +122,7 @@ void CliRunner::next() {
     case CliCommand::Kind::Stop: return stop();
     case CliCommand::Kind::Record: return record(c);
     case CliCommand::Kind::Watch: return watch(c);
+    case CliCommand::Kind::MachineScan: return machineScan(c);
     }
 }
 

@@ -57,6 +57,7 @@ private:
     void stop();
     void vars(const CliCommand& c);  // cli_parameter_transfer.cpp
     void watch(const CliCommand& c); // cli_watch.cpp
+    void machineScan(const CliCommand& c); // cli_machine.cpp
     bool watchNamesKnown();          // fails with the family's names when a watch names another
     // The BDS5's own ways (cli_bds5.cpp).
     serialport::Bds5Session* bds5Session();

@@ -3,7 +3,7 @@
 nobody here wrote (pyserial). As the manual's multidrop section has it (L5416-5469, L10013-10038): all asleep
 at power-up, '\\' + ID wakes one and only it answers, each axis keeps its own variables, a broadcast reaches
 every axis and none answers it; the bench's socket picks the axis it reaches; servodesk-cli --axis talks to
-one axis."""
+one axis, and machine scan lists the axes on the line."""
 import os
 import socket
 import subprocess
@@ -73,6 +73,15 @@ def main(sim, cli_path):
         assert out.returncode == 0 and out.stdout.split() == ["5"], (out.returncode, out.stdout, out.stderr)
         out = cli("--axis", "Q", "send", "P X1")
         assert out.returncode == 3 and "axis Q" in out.stderr, (out.returncode, out.stderr)
+        passed += 1
+        # machine scan: one line per axis that answers, in ID order; E is not on the line. (An answer is
+        # credited to the ID in its prompt, so the wait only bounds how long an absent ID takes.)
+        out = cli("machine", "scan", "--ids", "E,D,C,B,A", "--wait", "5000")
+        assert out.returncode == 0, (out.returncode, out.stdout, out.stderr)
+        assert out.stdout.splitlines() == [f"{a} BDS5 interactive {a}->" for a in "ABCD"], out.stdout
+        assert "4 axes answered of 5 IDs called" in out.stderr, out.stderr
+        out = cli("--axis", "C", "send", "P X2")  # the scan left the line asleep, and C answers when called
+        assert out.returncode == 0 and out.stdout.split() == ["7"], (out.returncode, out.stdout, out.stderr)
         passed += 1
     print(f"sim --axes: {passed} passed, 0 failed")
     return 0
