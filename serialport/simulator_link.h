@@ -11,6 +11,8 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace serialport {
 
@@ -30,6 +32,9 @@ public:
         // With overrunModel: this side's UART sends a byte only while the controller's CTS is on (RTS/CTS, as
         // SerialPortLink::FlowControl::Hardware). false: bytes go out back to back and may be lost.
         bool hardwareFlowControl = true;
+        // A multidrop line of drives with these axis IDs (drive_core::MultidropBus; BDS5 "A", "B" ...) instead
+        // of one drive; empty for one drive.
+        std::vector<std::string> axes;
     };
 
     SimulatorLink(drive_core::DriveFamily family, Options options, QObject* parent = nullptr);

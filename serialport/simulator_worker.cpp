@@ -2,6 +2,7 @@
 #include "simulator_worker.h"
 
 #include "drive_core/drive_factory.h"
+#include "drive_core/multidrop_bus.h"
 #include "drive_core/pmc960/pmc960_drive.h"
 
 #include <algorithm>
@@ -20,7 +21,13 @@ SimulatorWorker::SimulatorWorker(drive_core::DriveFamily family, SimulatorLink::
 SimulatorWorker::~SimulatorWorker() = default;
 
 void SimulatorWorker::start() {
-    m_drive = drive_core::makeDrive(m_family);
+    if (!m_options.axes.empty()) {
+        std::string why;
+        m_drive = drive_core::MultidropBus::make(m_family, m_options.axes, why);
+        if (!m_drive) return emit failed(QString::fromStdString(why));
+    } else {
+        m_drive = drive_core::makeDrive(m_family);
+    }
     if (!m_drive) {
         emit failed(tr("No simulator for the %1 yet").arg(QString::fromLatin1(drive_core::familyName(m_family))));
         return;
