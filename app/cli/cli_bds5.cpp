@@ -25,7 +25,7 @@ serialport::Bds5Session* CliRunner::bds5Session() {
 }
 
 // vars dump FILE.VAR / vars send FILE.VAR: DUMP into Motion Link's .VAR, and its NAME value lines at the prompt
-// (the other families': cli_parameter_transfer.cpp).
+// (the other families': cli_vars.cpp).
 void CliRunner::bds5Vars(const CliCommand& c) {
     Bds5Session* session = bds5Session();
     serialport::Bds5Transfer* t = nullptr;

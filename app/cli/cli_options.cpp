@@ -20,7 +20,8 @@ QString cliUsage() {
         "usage: servodesk-cli [--drive bds5|sc750|pmc960] [--port PATH [--baud N] [--axis ID] | --sim] COMMAND ...\n"
         "  --port is a serial port (/dev/ttyUSB0), a pty, or a serial device server: tcp://HOST:PORT (raw)\n"
         "  or rfc2217://HOST:PORT (the server sets the line to --baud, 8N1)\n"
-        "  --axis ID talks to one axis of a BDS5 multidrop line (woken with \\ and ID; 0-9, A-Z)\n"
+        "  --axis ID talks to one axis of a multidrop line: BDS5 \\ID (0-9, A-Z), SC750 /nnn (0-254),\n"
+        "            PMC-960 <attn>ID (the THI ID)\n"
         "commands (several may follow one another; they run in order on one connection; the same for every\n"
         "family as far as the drive allows):\n"
         "  check FILE                         the family's diagnostics: FILE:LINE:COL: error: message\n"
@@ -48,7 +49,16 @@ QString cliUsage() {
         "  machine scan [--ids LIST] [--wait MS]\n"
         "                                     BDS5 multidrop line: call each ID (all of 0-9, A-Z, or LIST) and\n"
         "                                     print one line per axis that answers: ID, family, mode, prompt;\n"
-        "                                     an ID silent for MS ms (default 100) is taken as absent. Alone\n"
+        "                                     an ID silent for MS ms (default 100) is taken as absent\n"
+        "  machine backup DIR [--ids LIST]    read every axis's program and variables into DIR, with\n"
+        "                                     DIR/machine.sdm naming them (BDS5: the axes a scan finds;\n"
+        "                                     any family: the IDs of LIST, e.g. 1,2,3)\n"
+        "  machine compare DIR                read every axis DIR/machine.sdm names and list each variable\n"
+        "                                     and program line that differs from its files; exit 1 if any\n"
+        "  machine restore DIR                send every axis its program and variables, read the variables\n"
+        "                                     back and report what each drive holds; exit 1 unless all match\n"
+        "                                     Each machine command runs alone on its call; compare and restore\n"
+        "                                     use the project's port and family when --port is not given\n"
         "The default connection is --sim --drive bds5: a fresh simulated drive, faster than real time.\n"
         "Exit status: 0 success, 1 a drive error, mismatch or diagnostic, 2 bad usage, 3 no drive answer.\n");
 }
@@ -85,12 +95,7 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
         } else if (a == QLatin1String("--axis")) {
             const auto v = value(a);
             if (!v) return std::nullopt;
-            o.axis = v->toUpper();
-            // BDS5 IDs (L5416-5424); the other families' buses follow with their own addressing.
-            if (o.axis.size() != 1 || !(o.axis[0].isDigit() || (o.axis[0] >= u'A' && o.axis[0] <= u'Z'))) {
-                error = QStringLiteral("--axis %1 is not an axis ID (one of 0-9 and A-Z)").arg(*v);
-                return std::nullopt;
-            }
+            o.axis = v->toUpper(); // checked against the family's IDs once --drive is known (CliRunner::start)
         } else if (a == QLatin1String("--baud")) {
             const auto v = value(a);
             if (!v) return std::nullopt;
@@ -123,18 +128,34 @@ std::optional<CliOptions> parseCliOptions(const QStringList& args, QString& erro
             c.kind = rest[0] == QLatin1String("dump") ? CliCommand::Kind::VarsDump : CliCommand::Kind::VarsSend;
             c.args = {rest[1]};
         } else if (word == QLatin1String("machine")) {
-            if (rest.value(0) != QLatin1String("scan")) {
-                error = QStringLiteral("machine needs \"scan\" (backup, compare and restore are still to come)");
+            const QString verb = rest.value(0);
+            const bool scan = verb == QLatin1String("scan");
+            if (scan) c.kind = CliCommand::Kind::MachineScan;
+            else if (verb == QLatin1String("backup")) c.kind = CliCommand::Kind::MachineBackup;
+            else if (verb == QLatin1String("compare")) c.kind = CliCommand::Kind::MachineCompare;
+            else if (verb == QLatin1String("restore")) c.kind = CliCommand::Kind::MachineRestore;
+            else {
+                error = QStringLiteral("machine needs scan, backup DIR, compare DIR or restore DIR");
                 return std::nullopt;
             }
-            c.kind = CliCommand::Kind::MachineScan;
-            for (int k = 1; k < rest.size(); ++k) {
+            int k = 1;
+            if (!scan) {
+                if (rest.size() < 2 || rest[1].startsWith(QLatin1String("--"))) {
+                    error = QStringLiteral("machine %1 needs the machine's folder: machine %1 DIR").arg(verb);
+                    return std::nullopt;
+                }
+                c.args = {rest[k++]};
+            }
+            for (; k < rest.size(); ++k) {
                 bool ok = true;
-                if (rest[k] == QLatin1String("--ids") && k + 1 < rest.size()) c.scanIds = rest[++k].remove(u',').toUpper();
-                else if (rest[k] == QLatin1String("--wait") && k + 1 < rest.size()) c.scanWaitMs = rest[++k].toInt(&ok);
+                if (rest[k] == QLatin1String("--ids") && k + 1 < rest.size() && c.kind != CliCommand::Kind::MachineCompare &&
+                    c.kind != CliCommand::Kind::MachineRestore)
+                    c.scanIds = rest[++k].toUpper();
+                else if (rest[k] == QLatin1String("--wait") && k + 1 < rest.size() && scan) c.scanWaitMs = rest[++k].toInt(&ok);
                 else ok = false;
                 if (!ok || c.scanWaitMs < 1) {
-                    error = QStringLiteral("machine scan takes --ids LIST and --wait MS, not \"%1\"").arg(rest[k]);
+                    error = scan ? QStringLiteral("machine scan takes --ids LIST and --wait MS, not \"%1\"").arg(rest[k])
+                                 : QStringLiteral("machine %1 does not take \"%2\"").arg(verb, rest[k]);
                     return std::nullopt;
                 }
             }

@@ -11,7 +11,8 @@
 namespace app::cli {
 
 struct CliCommand {
-    enum class Kind { Check, Compile, Download, Upload, VarsDump, VarsSend, Send, Run, Stop, Record, Watch, MachineScan };
+    enum class Kind { Check, Compile, Download, Upload, VarsDump, VarsSend, Send, Run, Stop, Record, Watch, MachineScan, MachineBackup,
+                      MachineCompare, MachineRestore };
     Kind kind = Kind::Send;
     QStringList args;         // files, lines, label
     double followSeconds = 0; // run --follow
@@ -23,7 +24,7 @@ struct CliCommand {
     double watchForSeconds = 0; // watch --for
     QString csvPath;            // record --csv, watch --csv
     QString output;             // compile -o
-    QString scanIds;            // machine scan --ids (all of 0-9, A-Z when empty)
+    QString scanIds;            // machine scan/backup --ids (all of 0-9, A-Z when empty; comma-separated)
     int scanWaitMs = 100;       // machine scan --wait: how long a called ID may take to answer
 };
 

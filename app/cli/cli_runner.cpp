@@ -7,6 +7,7 @@
 #include "drive_core/drive_factory.h"
 #include "drive_core/pmc960/pmc960_checker.h"
 #include "drive_core/sc750/sc750_compiler.h"
+#include "serialport/axis_link.h"
 #include "serialport/network_link.h"
 #include "serialport/port_link.h"
 #include "serialport/simulator_link.h"
@@ -42,6 +43,7 @@ CliRunner::CliRunner(CliOptions options, QObject* parent) : QObject(parent), m_o
 CliRunner::~CliRunner() {
     m_session.reset(); // the session refers to the link: it goes first
     m_link.reset();
+    m_line.reset();
 }
 
 void CliRunner::start() {
@@ -50,13 +52,12 @@ void CliRunner::start() {
     if (!m_options.axis.isEmpty() && m_options.simulated)
         return fail(kUsage, QStringLiteral("--axis needs --port: the simulated drive of --sim is a single drive "
                                            "(servodesk-sim --axes serves a multidrop line)"));
-    if (!m_options.axis.isEmpty() && m_family != drive_core::DriveFamily::Bds5)
-        return fail(kUsage, QStringLiteral("--axis is for a BDS5 multidrop line; the %1's addressing is not supported yet")
-                                .arg(familyDisplayName(m_family)));
+    if (const QString problem = serialport::axisIdProblem(m_family, m_options.axis);
+        !m_options.axis.isEmpty() && !problem.isEmpty())
+        return fail(kUsage, QStringLiteral("--axis: %1").arg(problem));
     if (!watchNamesKnown()) return;
-    if (std::any_of(m_options.commands.begin(), m_options.commands.end(),
-                    [](const CliCommand& c) { return c.kind == CliCommand::Kind::MachineScan; }))
-        return machineScan(m_options.commands.front());
+    if (std::any_of(m_options.commands.begin(), m_options.commands.end(), isMachineCommand))
+        return machine(m_options.commands.front());
     for (const CliCommand& c : m_options.commands) {
         if (!needsDrive(c)) continue;
         return connectDrive();
@@ -77,8 +78,11 @@ void CliRunner::connectDrive() {
         m_speed = realTime ? 1.0 : kSimulatorSpeed;
         m_link = std::make_unique<serialport::SimulatorLink>(m_family,
                                                              serialport::SimulatorLink::Options{m_speed, 9600, false});
-    } else {
+    } else if (m_options.axis.isEmpty()) {
         m_link = serialport::makePortLink(m_options.port, m_options.baud, m_family);
+    } else { // one axis of a multidrop line, selected by the family's addressing once the line is open
+        m_line = serialport::makePortLink(m_options.port, m_options.baud, m_family);
+        m_link = std::make_unique<serialport::AxisLink>(*m_line, m_family, m_options.axis);
     }
     m_session = serialport::makeDriveSession(m_family, *m_link);
     connect(m_session.get(), &serialport::DriveSession::linkFailed, this, [this](const QString& why) { fail(kNoAnswer, why); });
@@ -92,18 +96,13 @@ void CliRunner::connectDrive() {
         if (m_following) return;
         const QString who = m_options.axis.isEmpty()
                                 ? QStringLiteral("the %1").arg(familyDisplayName(m_family))
-                                : QStringLiteral("axis %1 of the %2 line (is a drive's ADDR %1?)")
+                                : QStringLiteral("axis %1 of the %2 line (is a drive's address %1?)")
                                       .arg(m_options.axis, familyDisplayName(m_family));
         fail(kNoAnswer, QStringLiteral("no answer from %1 on %2 within %3 s")
                             .arg(who, m_link->description())
                             .arg(kConnectTimeoutMs / 1000));
     });
     m_deadline.start(kConnectTimeoutMs);
-    // On a multidrop line every axis sleeps until '\' and its ID wake it (L5449-5451); its prompt makes the
-    // session ready.
-    if (!m_options.axis.isEmpty())
-        connect(m_link.get(), &serialport::Link::opened, this,
-                [this] { m_link->write("\\" + m_options.axis.toLatin1()); });
     m_link->open();
 }
 
@@ -122,7 +121,10 @@ void CliRunner::next() {
     case CliCommand::Kind::Stop: return stop();
     case CliCommand::Kind::Record: return record(c);
     case CliCommand::Kind::Watch: return watch(c);
-    case CliCommand::Kind::MachineScan: return machineScan(c);
+    case CliCommand::Kind::MachineScan:
+    case CliCommand::Kind::MachineBackup:
+    case CliCommand::Kind::MachineCompare:
+    case CliCommand::Kind::MachineRestore: return machine(c);
     }
 }
 

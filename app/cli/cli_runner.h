@@ -2,7 +2,7 @@
 // in order through the family's DriveSession, the same contract and transfers as the IDE's. Event-driven:
 // main() runs the event loop and exits with done()'s code. stdout carries machine-readable output, stderr
 // progress and reasons. The verbs are the same for every family as far as the drive allows (issue 17): vars
-// reads and writes each family's own file (cli_bds5.cpp, cli_parameter_transfer.cpp), watch polls every
+// reads and writes each family's own file (cli_bds5.cpp, cli_vars.cpp), watch polls every
 // family (cli_watch.cpp); record (RECORD/PLAY) is the BDS5's alone.
 #pragma once
 
@@ -28,6 +28,7 @@ struct Bds5TransferResult;
 namespace app::cli {
 
 QString familyDisplayName(drive_core::DriveFamily family); // "BDS5", "SC750", "PMC-960"
+bool isMachineCommand(const CliCommand& c);
 
 class CliRunner final : public QObject {
     Q_OBJECT
@@ -55,9 +56,12 @@ private:
     void sendLines(const QStringList& lines, int index);
     void run(const CliCommand& c);
     void stop();
-    void vars(const CliCommand& c);  // cli_parameter_transfer.cpp
+    void vars(const CliCommand& c);  // cli_vars.cpp
     void watch(const CliCommand& c); // cli_watch.cpp
-    void machineScan(const CliCommand& c); // cli_machine.cpp
+    // cli_machine.cpp: scan, backup, compare, restore of every axis on a multidrop line
+    void machine(const CliCommand& c);
+    void machineScan(const CliCommand& c);
+    void machineJob(const CliCommand& c);
     bool watchNamesKnown();          // fails with the family's names when a watch names another
     // The BDS5's own ways (cli_bds5.cpp).
     serialport::Bds5Session* bds5Session();
@@ -69,6 +73,7 @@ private:
     CliOptions m_options;
     drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
     std::size_t m_next = 0;
+    std::unique_ptr<serialport::Link> m_line; // the multidrop line under m_link (an AxisLink) with --axis
     std::unique_ptr<serialport::Link> m_link;
     std::unique_ptr<serialport::DriveSession> m_session;
     QTimer m_deadline;

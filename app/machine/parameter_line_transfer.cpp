@@ -1,9 +1,6 @@
-// CliParameterTransfer: the SC750's and the PMC-960's parameter files over sendLine, and the vars verb that
+// ParameterLineTransfer: the SC750's and the PMC-960's parameter files over sendLine, and the vars verb that
 // picks it or the BDS5's .VAR transfers.
-#include "cli_parameter_transfer.h"
-
-#include "cli_files.h"
-#include "cli_runner.h"
+#include "parameter_line_transfer.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 #include "serialport/pmc960_parameter_file.h"
@@ -11,7 +8,7 @@
 
 #include <algorithm>
 
-namespace app::cli {
+namespace app::machine {
 
 namespace {
 using drive_core::DriveFamily;
@@ -27,18 +24,18 @@ std::vector<std::string> sc750Parameters() {
 }
 } // namespace
 
-CliParameterTransfer::CliParameterTransfer(serialport::DriveSession& session, QObject* parent)
+ParameterLineTransfer::ParameterLineTransfer(serialport::DriveSession& session, QObject* parent)
     : QObject(parent), m_session(session) {
-    connect(&session, &serialport::DriveSession::answered, this, &CliParameterTransfer::onAnswered);
-    connect(&session, &serialport::DriveSession::lost, this, &CliParameterTransfer::onLost);
+    connect(&session, &serialport::DriveSession::answered, this, &ParameterLineTransfer::onAnswered);
+    connect(&session, &serialport::DriveSession::lost, this, &ParameterLineTransfer::onLost);
 }
 
-bool CliParameterTransfer::handles(DriveFamily family) {
+bool ParameterLineTransfer::handles(DriveFamily family) {
     return family == DriveFamily::Sc750 || family == DriveFamily::Pmc960;
 }
 
 // The reads: each SC750 set-up parameter by name (G), each backed-up PMC-960 parameter's stored value (?).
-void CliParameterTransfer::dump() {
+void ParameterLineTransfer::dump() {
     m_dumping = true;
     if (m_session.family() == DriveFamily::Sc750) {
         for (const std::string& name : sc750Parameters()) m_steps.append({0, QString::fromStdString(name)});
@@ -49,12 +46,12 @@ void CliParameterTransfer::dump() {
     next();
 }
 
-void CliParameterTransfer::send(const QString& fileText) {
+void ParameterLineTransfer::send(const QString& fileText) {
     m_dumping = false;
     if (m_session.family() == DriveFamily::Sc750) {
         const Sc750ParameterFile file = Sc750ParameterFile::parse(fileText);
         if (!file.hasBlock())
-            return finish(CliParameterResult::Status::Refused,
+            return finish(VariableResult::Status::Refused,
                           tr("The file holds no PARAMS START ... PARAMS END block: nothing was sent."));
         for (const auto& p : file.problems())
             m_result.errors.append({p.sourceLine, 0, p.message + QStringLiteral(" '%1'").arg(p.text.trimmed())});
@@ -66,19 +63,19 @@ void CliParameterTransfer::send(const QString& fileText) {
         for (const auto& l : file.lines()) m_steps.append({l.sourceLine, l.command});
     }
     if (m_steps.isEmpty())
-        return finish(CliParameterResult::Status::Refused,
+        return finish(VariableResult::Status::Refused,
                       tr("The file holds no parameter settings: nothing was sent."));
     next();
 }
 
-void CliParameterTransfer::next() {
+void ParameterLineTransfer::next() {
     emit progress(m_at, int(m_steps.size()));
     if (m_at >= m_steps.size()) return m_dumping ? finishDump() : finishSend(QString());
     m_retried = false;
     m_pending = m_session.sendLine(m_steps[m_at].line);
 }
 
-void CliParameterTransfer::onAnswered(quint64 id, const serialport::LineAnswer& answer) {
+void ParameterLineTransfer::onAnswered(quint64 id, const serialport::LineAnswer& answer) {
     if (!m_pending || id != m_pending) return;
     m_pending = 0;
     const Step& step = m_steps[m_at++];
@@ -91,7 +88,7 @@ void CliParameterTransfer::onAnswered(quint64 id, const serialport::LineAnswer& 
 
 // A line that went unanswered goes once more: each reads or sets an absolute value (NAME, NAME=VALUE, TGP?,
 // TGP16, SW1), so reaching the drive twice does what once does.
-void CliParameterTransfer::onLost(quint64 id, const QString& reason) {
+void ParameterLineTransfer::onLost(quint64 id, const QString& reason) {
     if (!m_pending || id != m_pending) return;
     m_pending = 0;
     if (!m_retried) {
@@ -100,14 +97,14 @@ void CliParameterTransfer::onLost(quint64 id, const QString& reason) {
         return;
     }
     if (m_dumping)
-        return finish(CliParameterResult::Status::Lost, tr("Reading stopped: %1; nothing was written.").arg(reason));
+        return finish(VariableResult::Status::Lost, tr("Reading stopped: %1; nothing was written.").arg(reason));
     finishSend(reason);
 }
 
 // The file from what the reads gave: the SC750's block, the PMC-960's setting lines.
-void CliParameterTransfer::finishDump() {
+void ParameterLineTransfer::finishDump() {
     if (!m_result.errors.isEmpty())
-        return finish(CliParameterResult::Status::Refused, tr("The drive refused %n of the reads; nothing was written.",
+        return finish(VariableResult::Status::Refused, tr("The drive refused %n of the reads; nothing was written.",
                                                               nullptr, int(m_result.errors.size())));
     if (m_session.family() == DriveFamily::Sc750) {
         QList<QPair<QString, QString>> values;
@@ -117,14 +114,14 @@ void CliParameterTransfer::finishDump() {
             const double v = m_answers[i].toDouble(&number);
             if (!number)
                 return finish(
-                    CliParameterResult::Status::Refused,
+                    VariableResult::Status::Refused,
                     tr("%1 read as \"%2\", not a number; nothing was written.").arg(m_steps[i].line, m_answers[i]));
             values.append({m_steps[i].line, Sc750ParameterFile::formatValue(names[std::size_t(i)], v)});
         }
         m_result.text =
-            Sc750ParameterFile::toText({tr("SC750 set-up parameters, read with servodesk-cli vars dump")}, values);
+            Sc750ParameterFile::toText({tr("SC750 set-up parameters, read from the drive by ServoDesk")}, values);
     } else {
-        QStringList comments{tr("PMC-960 parameter table read with servodesk-cli vars dump")}, lines;
+        QStringList comments{tr("PMC-960 parameter table read from the drive by ServoDesk")}, lines;
         const auto parameters = Pmc960ParameterFile::backedUp();
         for (int i = 0; i < m_answers.size(); ++i) {
             const serialport::Pmc960Parameter& p = *parameters[std::size_t(i)];
@@ -135,17 +132,17 @@ void CliParameterTransfer::finishDump() {
             else if (value.isEmpty()) // a label never set: TL has no way to clear one
                 comments << tr("%1 not set").arg(serialport::parameterName(p));
             else
-                return finish(CliParameterResult::Status::Refused,
+                return finish(VariableResult::Status::Refused,
                               tr("%1 answered \"%2\", which the table cannot write back; nothing was written.")
                                   .arg(m_steps[i].line, m_answers[i]));
         }
         m_result.text = Pmc960ParameterFile::toText(comments, lines);
     }
-    finish(CliParameterResult::Status::Done,
+    finish(VariableResult::Status::Done,
            tr("Read %n parameter(s) from the drive.", nullptr, int(m_answers.size())));
 }
 
-void CliParameterTransfer::finishSend(const QString& stoppedBecause) {
+void ParameterLineTransfer::finishSend(const QString& stoppedBecause) {
     int refused = 0;
     for (const auto& e : m_result.errors) refused += e.code != 0 ? 1 : 0;
     const int problems = int(m_result.errors.size()) - refused;
@@ -158,13 +155,13 @@ void CliParameterTransfer::finishSend(const QString& stoppedBecause) {
                              .arg(total);
     if (refused > 0) text += tr("; the drive refused %n of them", nullptr, refused);
     if (problems > 0) text += tr("; %n line(s) of the file were not sent", nullptr, problems);
-    const auto status = !stoppedBecause.isEmpty()   ? CliParameterResult::Status::Lost
-                        : m_result.errors.isEmpty() ? CliParameterResult::Status::Done
-                                                    : CliParameterResult::Status::Refused;
+    const auto status = !stoppedBecause.isEmpty()   ? VariableResult::Status::Lost
+                        : m_result.errors.isEmpty() ? VariableResult::Status::Done
+                                                    : VariableResult::Status::Refused;
     finish(status, text + QLatin1Char('.'));
 }
 
-void CliParameterTransfer::finish(CliParameterResult::Status status, const QString& summary) {
+void ParameterLineTransfer::finish(VariableResult::Status status, const QString& summary) {
     // The file's problems were found before anything went out, the refusals after: in file order together.
     std::stable_sort(m_result.errors.begin(), m_result.errors.end(),
                      [](const auto& a, const auto& b) { return a.sourceLine < b.sourceLine; });
@@ -173,34 +170,4 @@ void CliParameterTransfer::finish(CliParameterResult::Status status, const QStri
     emit finished(m_result);
 }
 
-// vars dump FILE / vars send FILE, every family: the BDS5's .VAR, the others' parameter files.
-void CliRunner::vars(const CliCommand& c) {
-    if (!CliParameterTransfer::handles(m_family)) return bds5Vars(c);
-    QString error;
-    std::optional<QString> text;
-    if (c.kind == CliCommand::Kind::VarsSend && !(text = readTextFile(c.args[0], error))) return fail(kUsage, error);
-    auto* t = new CliParameterTransfer(*m_session, this);
-    connect(t, &CliParameterTransfer::progress, this,
-            [this](int done, int total) { progress(QStringLiteral("%1/%2 lines").arg(done).arg(total)); });
-    connect(t, &CliParameterTransfer::finished, this, [this, t, c](const CliParameterResult& r) {
-        t->deleteLater();
-        progress(QString());
-        for (const auto& e : r.errors) {
-            const QString where =
-                e.sourceLine > 0 ? QStringLiteral("%1:%2").arg(c.args[0]).arg(e.sourceLine) : c.args[0];
-            out(QStringLiteral("%1: %2\n").arg(where, e.text));
-        }
-        if (r.status == CliParameterResult::Status::Lost) return fail(kNoAnswer, r.summary);
-        if (r.status == CliParameterResult::Status::Refused) return fail(kDriveError, r.summary);
-        QString why;
-        if (c.kind == CliCommand::Kind::VarsDump && !writeTextFile(c.args[0], r.text, why)) return fail(kUsage, why);
-        out(r.summary + QLatin1Char('\n'));
-        next();
-    });
-    if (text)
-        t->send(*text);
-    else
-        t->dump();
-}
-
-} // namespace app::cli
+} // namespace app::machine

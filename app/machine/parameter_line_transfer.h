@@ -1,8 +1,8 @@
-// CliParameterTransfer: vars dump and vars send for the families whose parameters are read and written one
+// ParameterLineTransfer: a parameter file read from or sent to the drive, for the families whose parameters are read and written one
 // line at a time through DriveSession::sendLine — the SC750's .PRM (NAME reads a G frame, NAME=VALUE writes a
 // P frame; serialport/sc750_parameter_file.h) and the PMC-960's parameter table as MPL lines (TGP? reads,
 // TGP16 writes; serialport/pmc960_parameter_file.h). The BDS5's .VAR goes through its own transfers
-// (cli_bds5.cpp). One line in flight at a time; a refusal is kept with its file line and the other lines
+// (variable_transfer.h picks). One line in flight at a time; a refusal is kept with its file line and the other lines
 // still go, as the BDS5's send does; a line left unanswered goes once more. GUI thread; the session must
 // outlive the transfer.
 #pragma once
@@ -14,9 +14,9 @@
 #include <QString>
 #include <QStringList>
 
-namespace app::cli {
+namespace app::machine {
 
-struct CliParameterResult {
+struct VariableResult {
     enum class Status { Done, Refused, Lost };
     Status status = Status::Refused; // Refused: the drive refused a line (or the file had problems); Lost: no answer
     QString text;                    // dump: the file
@@ -24,10 +24,10 @@ struct CliParameterResult {
     QString summary;                             // one line: what happened
 };
 
-class CliParameterTransfer final : public QObject {
+class ParameterLineTransfer final : public QObject {
     Q_OBJECT
 public:
-    explicit CliParameterTransfer(serialport::DriveSession& session, QObject* parent = nullptr);
+    explicit ParameterLineTransfer(serialport::DriveSession& session, QObject* parent = nullptr);
 
     // false (and nothing starts) for a family without such a file here: the BDS5.
     static bool handles(drive_core::DriveFamily family);
@@ -37,7 +37,7 @@ public:
 
 signals:
     void progress(int done, int total);
-    void finished(const app::cli::CliParameterResult& result);
+    void finished(const app::machine::VariableResult& result);
 
 private:
     struct Step {
@@ -50,7 +50,7 @@ private:
     void onLost(quint64 id, const QString& reason);
     void finishDump();
     void finishSend(const QString& stoppedBecause);
-    void finish(CliParameterResult::Status status, const QString& summary);
+    void finish(VariableResult::Status status, const QString& summary);
 
     serialport::DriveSession& m_session;
     bool m_dumping = false;
@@ -59,7 +59,7 @@ private:
     int m_at = 0;
     quint64 m_pending = 0;
     bool m_retried = false; // the line in flight went once unanswered already
-    CliParameterResult m_result;
+    VariableResult m_result;
 };
 
-} // namespace app::cli
+} // namespace app::machine
