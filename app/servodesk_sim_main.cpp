@@ -37,17 +37,21 @@ int usage(int code) {
                  "                  one client at a time; a client that opens with Telnet negotiation speaks\n"
                  "                  RFC 2217 (rfc2217://), any other gets the raw bytes (tcp://)\n"
                  "  --speed F       run simulated time F times faster than the wall clock (default 1)\n"
-                 "  --axes ID,...   bds5: a multidrop bus of up to 32 drives on the one line, each with ADDR = its\n"
-                 "                  ID (0-9, A-Z), all asleep at power-up: \\ + ID wakes one, \\ alone puts all to\n"
-                 "                  sleep, \\* broadcasts; only the woken axis answers. --control reaches the\n"
-                 "                  first axis until \"axis ID\" picks another\n"
+                 "  --axes ID,...   a multidrop bus of up to 32 drives on the one line; only the axis selected\n"
+                 "                  answers. --control reaches the first axis until \"axis ID\" picks another.\n"
+                 "                  bds5: ADDR = ID (0-9, A-Z), all asleep at power-up: \\ + ID wakes one,\n"
+                 "                  \\ alone puts all to sleep, \\* broadcasts\n"
+                 "                  sc750: S1 address = ID (0-254, e.g. 1,2,17), all logged off at power-up:\n"
+                 "                  /nnn logs one on and every other one off\n"
+                 "                  pmc960: THI = ID (one of 21H-5AH, e.g. A,B), all listeners at power-up:\n"
+                 "                  <attn> (1DH) + ID makes one the talker; then a CR gets its prompt\n"
                  "  --link PATH     with --pty: also make PATH a symbolic link to the pty, replacing a stale\n"
                  "                  one, so a client can reconnect by name after a restart\n"
-                 "  --overrun       pmc960 only: the controller's one-character receive buffer overruns as\n"
-                 "                  the real one does: bytes cross at the baud rate, and one arriving while\n"
-                 "                  the firmware is busy (5 ms after a + or - trigger, or while a program\n"
-                 "                  runs) overwrites the one before. A pty has no CTS line, so a host must\n"
-                 "                  pace itself (what RTS/CTS does on a real port)\n"
+                 "  --overrun       one pmc960 only (not --axes): the controller's one-character receive\n"
+                 "                  buffer overruns as the real one does: bytes cross at the baud rate, and one\n"
+                 "                  arriving while the firmware is busy (5 ms after a + or - trigger, or while\n"
+                 "                  a program runs) overwrites the one before. A pty has no CTS line, so a host\n"
+                 "                  must pace itself (what RTS/CTS does on a real port)\n"
                  "  --control PATH  listen on a Unix-domain socket at PATH for bench commands, one a line,\n"
                  "                  each answered with one line (OK, ERROR <reason>, or the status):\n"
                  "                    input N on|off   enable on|off   motion on|off   home on|off\n"
@@ -143,7 +147,7 @@ int main(int argc, char** argv) {
     if (overrun) {
         auto* pmc = dynamic_cast<drive_core::pmc960::Pmc960Drive*>(drive.get());
         if (!pmc) {
-            std::fprintf(stderr, "servodesk-sim: --overrun is for --drive pmc960 only\n");
+            std::fprintf(stderr, "servodesk-sim: --overrun is for one --drive pmc960 only, not --axes\n");
             return 2;
         }
         pmc->setOverrunModel(true);

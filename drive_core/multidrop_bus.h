@@ -1,12 +1,16 @@
-// MultidropBus: up to 32 simulated drives of one family on one RS-485 line (issue 21), itself a Drive, so a
-// pty, a TCP port or the IDE's SimulatorLink carries a whole bus as it carries one drive. Every axis hears
-// every byte; each decides by its own manual's addressing whether it is spoken to, and only an addressed
-// axis transmits (the electrical rule of a multidrop line: BDS5 L5416-5469, L10013-10038). Axes share the
-// bus's time. The bench (inputs, load, motor) is one axis's at a time: benchAxis().
+// MultidropBus: up to 32 simulated drives of one family on one RS-485/RS-422 line (issue 21), itself a Drive,
+// so a pty, a TCP port or the IDE's SimulatorLink carries a whole bus as it carries one drive. Every axis
+// hears every byte; each decides by its own manual's addressing whether it is spoken to, and only an
+// addressed axis transmits (the electrical rule of a multidrop line). Axes share the bus's time. The bench
+// (inputs, load, motor) is one axis's at a time: benchAxis().
 //
-// BDS5: each axis's ADDR is its ID ('0'-'9', 'A'-'Z'), kept in the drive's memory as a machine builder sets
-// it once, so each powers up asleep; '\' + ID wakes one, '\' alone puts all to sleep, '\*' broadcasts (all
-// execute, none transmit). The SC750's and the PMC-960's addressing are not on the bus yet: make() says so.
+// Each axis's address is set as a machine builder sets it once, before the first power-up:
+// BDS5 (L5416-5469, L10013-10038): ADDR = the ID ('0'-'9', 'A'-'Z'), so each powers up asleep; '\' + ID wakes
+//   one, '\' alone puts all to sleep, '\*' broadcasts (all execute, none transmit).
+// SC750 (App. C L3676-3734): the S1 switch = the ID, a decimal address 0-254 ("1", "17"); all power up logged
+//   off; "/nnn" logs one on, and every other unit (the one logged on before too) turns its transmitter off.
+// PMC-960 (L2537-2568): THI = the ID, one character 21H-5AH ("A"); all power up listeners (pmc960/DECISIONS.md);
+//   <attn> ID makes one the talker, the rest listeners; polls <attn> + lower case reach the talker alone.
 #pragma once
 
 #include "drive.h"
@@ -21,8 +25,8 @@ class MultidropBus final : public Drive {
 public:
     static constexpr std::size_t kMaxAxes = 32;
 
-    // A bus of one axis per ID, in order; nullptr with why set when the family or an ID cannot be on a bus
-    // (BDS5 IDs: one character each of 0-9 and A-Z, no repeats; at most 32).
+    // A bus of one axis per ID, in order; nullptr with why set (naming the manual's lines) when an ID cannot
+    // be on a bus: not the family's form of address (above), a repeat, or more than 32.
     static std::unique_ptr<MultidropBus> make(DriveFamily family, const std::vector<std::string>& ids, std::string& why);
 
     DriveFamily family() const override { return m_family; }

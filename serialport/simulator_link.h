@@ -32,8 +32,8 @@ public:
         // With overrunModel: this side's UART sends a byte only while the controller's CTS is on (RTS/CTS, as
         // SerialPortLink::FlowControl::Hardware). false: bytes go out back to back and may be lost.
         bool hardwareFlowControl = true;
-        // A multidrop line of drives with these axis IDs (drive_core::MultidropBus; BDS5 "A", "B" ...) instead
-        // of one drive; empty for one drive.
+        // A multidrop line of drives with these axis IDs, each in its family's form ("A", "B" or "1", "17";
+        // drive_core::MultidropBus) instead of one drive; empty for one drive.
         std::vector<std::string> axes;
     };
 

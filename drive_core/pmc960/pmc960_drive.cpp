@@ -41,7 +41,9 @@ void Pmc960Drive::reset(bool powerCycle) {
     m_interpreter.abort();
     m_mode = Mode::Command;
     m_attention = false;
-    m_talker = true;
+    // One drive on RS-232 talks from power-up; on a bus every drive would, so there each waits to be selected.
+    // A software reset keeps the choice the host made (DECISIONS.md, "Multi-axis bus").
+    if (powerCycle || !m_onBus) m_talker = !m_onBus;
     m_heldError.reset();
     m_estopStopping = false;
     const std::int64_t thb = m_state.table.inUse("THB");
@@ -53,6 +55,11 @@ void Pmc960Drive::reset(bool powerCycle) {
     const bool skipRoutine = generic || m_state.lines.estop || m_state.lines.fault || m_state.lines.breakLine;
     if (label != 0 && !skipRoutine && m_interpreter.start(label)) return; // its end prompts
     prompt();
+}
+
+void Pmc960Drive::joinBus(char id) {
+    m_state.table.set("THI", id);
+    m_onBus = true;
 }
 
 void Pmc960Drive::receive(std::string_view bytes) {
@@ -112,7 +119,7 @@ void Pmc960Drive::step(Microseconds dt) {
     std::size_t i = 0;
     while (i < m_received.size()) {
         const char c = m_received[i];
-        const bool held = m_interpreter.running() && m_interpreter.wait() == Pmc960Wait::None &&
+        const bool held = m_talker && m_interpreter.running() && m_interpreter.wait() == Pmc960Wait::None &&
                           m_mode == Mode::Command && m_established && !m_attention && c != kEsc && c != kAttention;
         if (held) break;
         ++i;
@@ -178,7 +185,11 @@ void Pmc960Drive::inputByte(char c) {
             deliver(c);
             return;
         }
-        m_talker = c == m_state.axisId(); // <attn><ID>: talker or listener, not counted
+        // <attn><ID>: talker or listener, not counted. A talker on a bus that another ID deselects turns its
+        // RS-422 drivers off: what it had not sent yet never reaches the line (L2555).
+        const bool wasTalker = m_talker;
+        m_talker = c == m_state.axisId();
+        if (wasTalker && !m_talker && m_onBus) m_uart.discard();
         return;
     }
     if (c == kAttention) {

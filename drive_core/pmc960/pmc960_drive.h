@@ -46,6 +46,11 @@ public:
     SimulatorControls* controls() override { return &m_controls; }
     // ADDR4'..ADDR0' as a 5-bit number, bit k = ADDRk' asserted; START' then runs label 40H + N (5.9).
     void setAddress(int address) { m_address = address & 0x1F; }
+    // Wired to a multidrop RS-422 line with THI = id, as a machine builder sets each axis once (THI is in the
+    // parameter table, kept over power cycles). From the next power-up the drive is a listener until
+    // <attn><id> makes it the talker, and a talker deselected drops what it had not sent (DECISIONS.md).
+    void joinBus(char id);
+    bool onBus() const { return m_onBus; }
     // The optional EPROM in socket U46 (5.10): copied at power-up and N* if it begins with "@PROGRAM".
     void setEprom(std::string image) { m_eprom = std::move(image); }
 
@@ -101,6 +106,7 @@ private:
     Mode m_mode = Mode::Command;
     bool m_attention = false;
     bool m_talker = true;
+    bool m_onBus = false;
     bool m_established = true;
     std::uint16_t m_checksum = 0;
     std::optional<int> m_heldError; // host mode: the first async error, sent before the next prompt

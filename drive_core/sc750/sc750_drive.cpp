@@ -4,6 +4,7 @@
 
 #include "sc750_bin.h"
 #include "sc750_drive_index.h"
+#include "sc750_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,7 @@ void Sc750Drive::powerUp() {
     m_wasEnabled = false;
     m_charReceived = m_disableEvent = false;
     m_monitor.reset();
+    m_inLogon = m_othersFrame = false;
     refreshInterruptsEnabled();
     if (m_vm.program()) {
         m_vm.powerCycle();
@@ -184,7 +186,11 @@ void Sc750Drive::handleByte(char c) {
         m_uart.setMuted(!m_loggedOn);
         if (c == 0) return;
     }
-    if (m_monitor.inFrame() || c == 0x01 || c == kCtrlC) {
+    if (!m_loggedOn && (m_othersFrame || c == kSoh)) { // a frame for the unit logged on: no logon inside it
+        m_othersFrame = c != kFrameEnd;
+        return;
+    }
+    if (m_monitor.inFrame() || c == kSoh || c == kCtrlC) {
         if (m_loggedOn) m_monitor.feed(c);
         return;
     }

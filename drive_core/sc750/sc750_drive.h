@@ -210,6 +210,7 @@ private:
     bool m_disableEvent = false;
     std::string m_logon; // "/nnn" being received
     bool m_inLogon = false;
+    bool m_othersFrame = false; // logged off, between the SOH and CR of a frame the unit logged on answers
     // Catalog indices of the variables the drive computes or reacts to (looked up once, read every tick).
     const DriveIndex& ix() const { return *m_ix; }
     const DriveIndex* m_ix;

@@ -5,27 +5,13 @@ at power-up, '\\' + ID wakes one and only it answers, each axis keeps its own va
 every axis and none answers it; the bench's socket picks the axis it reaches; servodesk-cli --axis talks to
 one axis, and machine scan lists the axes on the line."""
 import os
-import socket
 import subprocess
 import sys
 import tempfile
 
 import serial  # Debian's python3-serial
 
-from sim_client import read_until, simulator
-
-
-
-
-def bench(path, line):
-    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as s:
-        s.settimeout(30)
-        s.connect(path)
-        s.sendall(line.encode() + b"\n")
-        answer = b""
-        while not answer.endswith(b"\n"):
-            answer += s.recv(256)
-        return answer.decode().strip()
+from sim_client import bench, read_until, simulator
 
 
 def main(sim, cli_path):

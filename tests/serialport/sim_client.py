@@ -2,6 +2,7 @@
 a marker. Real time over a pty or the loopback: the bounds are generous (the simulator may get a sliver of a
 loaded machine); a pass takes milliseconds."""
 import contextlib
+import socket
 import subprocess
 import time
 
@@ -26,3 +27,22 @@ def read_until(port, marker, timeout_s=30.0):
     if marker not in data:
         raise AssertionError(f"did not see {marker!r}; got {data!r}")
     return data
+
+
+def bench(path, line):
+    """One bench command on servodesk-sim's --control socket at path; its one-line answer."""
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as s:
+        s.settimeout(30)
+        s.connect(path)
+        s.sendall(line.encode() + b"\n")
+        answer = b""
+        while not answer.endswith(b"\n"):
+            answer += s.recv(256)
+        return answer.decode().strip()
+
+
+def refused(sim, drive, axes):
+    """servodesk-sim with a bad --axes list: its exit code and what it said on stderr."""
+    out = subprocess.run([sim, "--drive", drive, "--axes", axes, "--pty"], capture_output=True, text=True,
+                         timeout=60)
+    return out.returncode, out.stderr
