@@ -218,11 +218,11 @@ void Sc750DriveSession::askSource() {
         }
         TransferResult r;
         r.driveHolds = QStringLiteral("its program, unchanged (an upload changes nothing)");
-        if (m_source.isEmpty()) {
-            r.message = QStringLiteral("The controller holds no stored source.");
+        r.status = TransferResult::Status::Done;
+        if (m_source.isEmpty()) { // as a BDS5 without a program uploads no lines: a state, not a failure
+            r.message = QStringLiteral("The controller holds no stored source: no lines.");
             return finishTransfer(r);
         }
-        r.status = TransferResult::Status::Done;
         QString text = QString::fromLatin1(m_source).remove(QLatin1Char('\r'));
         if (text.endsWith(QLatin1Char('\n'))) text.chop(1);
         r.lines = text.split(QLatin1Char('\n'));
