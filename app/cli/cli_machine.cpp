@@ -1,9 +1,9 @@
 // servodesk-cli machine scan, backup, compare and restore: the axes of a multidrop line (issue 21).
 #include "cli_runner.h"
 
+#include "machine/axis_scan.h"
 #include "machine/machine_job.h"
 #include "serialport/axis_link.h"
-#include "serialport/bds5_bus_scan.h"
 #include "serialport/link.h"
 #include "serialport/port_link.h"
 
@@ -52,35 +52,31 @@ void CliRunner::machineScan(const CliCommand& c) {
     if (m_options.simulated)
         return fail(kUsage, QStringLiteral("machine scan needs --port: a multidrop line (servodesk-sim --axes serves "
                                            "one)"));
-    if (m_family != drive_core::DriveFamily::Bds5)
-        return fail(kUsage, QStringLiteral("machine scan is for a BDS5 line; the %1's addressing is not supported yet")
-                                .arg(familyDisplayName(m_family)));
-    const QString ids = c.scanIds.isEmpty() ? serialport::Bds5BusScan::allIds() : idList(c.scanIds).join(QString());
-    for (const QChar id : ids)
-        if (!serialport::Bds5BusScan::allIds().contains(id))
-            return fail(kUsage, QStringLiteral("machine scan --ids: %1 is not an axis ID (0-9, A-Z)").arg(id));
+    const QStringList ids = c.scanIds.isEmpty() ? serialport::allAxisIds(m_family) : idList(c.scanIds);
+    for (const QString& id : ids)
+        if (const QString problem = serialport::axisIdProblem(m_family, id); !problem.isEmpty())
+            return fail(kUsage, QStringLiteral("machine scan --ids: %1").arg(problem));
     m_link = serialport::makePortLink(m_options.port, m_options.baud, m_family);
-    auto* scan = new serialport::Bds5BusScan(*m_link, ids, c.scanWaitMs, this);
+    auto* scan = new machine::AxisScan(*m_link, m_family, ids, c.scanWaitMs, this);
     auto* clock = new QElapsedTimer;
     connect(m_link.get(), &serialport::Link::errorOccurred, this, [this](const QString& why) { fail(kNoAnswer, why); });
     connect(m_link.get(), &serialport::Link::opened, this, [scan, clock] {
         clock->start();
         scan->start();
     });
-    connect(scan, &serialport::Bds5BusScan::progress, this, [this, ids](int called, int total) {
+    connect(scan, &machine::AxisScan::progress, this, [this, ids](int called, int total) {
         progress(QStringLiteral("calling axis %1 (%2 of %3)").arg(ids.at(called)).arg(called + 1).arg(total));
     });
-    connect(scan, &serialport::Bds5BusScan::finished, this,
-            [this, clock, ids](const QList<serialport::Bds5BusScan::Axis>& axes) {
-                for (const auto& a : axes)
-                    out(QStringLiteral("%1 BDS5 %2 %3\n").arg(a.id).arg(a.mode, a.prompt));
-                std::fprintf(stderr, "machine scan: %lld axes answered of %lld IDs called, in %.2f s on %s\n",
-                             qlonglong(axes.size()), qlonglong(ids.size()), clock->elapsed() / 1000.0,
-                             qPrintable(m_link->description()));
-                delete clock;
-                if (axes.isEmpty()) return fail(kNoAnswer, QStringLiteral("no axis answered on %1").arg(m_link->description()));
-                emit done(kOk);
-            });
+    connect(scan, &machine::AxisScan::finished, this, [this, clock, ids](const QList<machine::FoundAxis>& axes) {
+        progress(QString());
+        for (const auto& a : axes) out(QStringLiteral("%1 %2 %3\n").arg(a.id, familyDisplayName(a.family), a.answer));
+        std::fprintf(stderr, "machine scan: %lld axes answered of %lld IDs called, in %.2f s on %s\n",
+                     qlonglong(axes.size()), qlonglong(ids.size()), clock->elapsed() / 1000.0,
+                     qPrintable(m_link->description()));
+        delete clock;
+        if (axes.isEmpty()) return fail(kNoAnswer, QStringLiteral("no axis answered on %1").arg(m_link->description()));
+        emit done(kOk);
+    });
     m_link->open();
 }
 
@@ -108,9 +104,6 @@ void CliRunner::machineJob(const CliCommand& c) {
     if (c.kind == CliCommand::Kind::MachineBackup) {
         if (m_options.simulated)
             return fail(kUsage, QStringLiteral("machine backup needs --port: the line the axes are on"));
-        if (c.scanIds.isEmpty() && m_family != drive_core::DriveFamily::Bds5)
-            return fail(kUsage, QStringLiteral("machine backup of a %1 line needs --ids LIST: the axes to read")
-                                    .arg(familyDisplayName(m_family)));
         project.port = m_options.port;
         project.baud = m_options.baud;
         for (const QString& id : idList(c.scanIds)) {
@@ -160,23 +153,23 @@ void CliRunner::machineJob(const CliCommand& c) {
         });
         job->start();
     };
-    if (!project.axes.isEmpty() || m_family != drive_core::DriveFamily::Bds5) {
+    if (!project.axes.isEmpty()) {
         connect(m_link.get(), &serialport::Link::opened, this, [run, project] { run(project); });
         return m_link->open();
     }
-    // A BDS5 backup without --ids: the axes a scan finds.
-    auto* scan = new serialport::Bds5BusScan(*m_link, serialport::Bds5BusScan::allIds(), c.scanWaitMs, this);
-    connect(m_link.get(), &serialport::Link::opened, scan, &serialport::Bds5BusScan::start);
-    connect(scan, &serialport::Bds5BusScan::progress, this, [this](int called, int total) {
+    // A backup without --ids: the axes a scan of every ID finds.
+    const QStringList ids = serialport::allAxisIds(m_family);
+    auto* scan = new machine::AxisScan(*m_link, m_family, ids, c.scanWaitMs, this);
+    connect(m_link.get(), &serialport::Link::opened, scan, &machine::AxisScan::start);
+    connect(scan, &machine::AxisScan::progress, this, [this](int called, int total) {
         progress(QStringLiteral("scanning: %1 of %2 IDs called").arg(called + 1).arg(total));
     });
-    connect(scan, &serialport::Bds5BusScan::finished, this,
-            [this, run, project](const QList<serialport::Bds5BusScan::Axis>& axes) mutable {
-                progress(QString());
-                if (axes.isEmpty()) return fail(kNoAnswer, QStringLiteral("no axis answered on %1").arg(m_link->description()));
-                for (const auto& a : axes) project.axes.append(MachineProject::axisNamed(QString(a.id), m_family));
-                run(project);
-            });
+    connect(scan, &machine::AxisScan::finished, this, [this, run, project](const QList<machine::FoundAxis>& axes) mutable {
+        progress(QString());
+        if (axes.isEmpty()) return fail(kNoAnswer, QStringLiteral("no axis answered on %1").arg(m_link->description()));
+        for (const auto& a : axes) project.axes.append(MachineProject::axisNamed(a.id, m_family));
+        run(project);
+    });
     m_link->open();
 }
 

@@ -48,6 +48,13 @@ def main(bin_dir):
             assert line.startswith("PTY /dev/"), line
             port = line[4:]
             on = ["--drive", family, "--port", port]
+            # scan: one line per axis that answers, ID first; an ID no axis has is not listed.
+            absent = {"bds5": "Z", "sc750": "200", "pmc960": "Z"}[family]
+            title = {"bds5": "BDS5", "sc750": "SC750", "pmc960": "PMC-960"}[family]
+            r = run(*on, "machine", "scan", "--ids", ",".join(axes + [absent]), "--wait", "500")
+            check(f"{family}: scan finds each axis and no other", r.returncode == 0
+                  and [l.split()[:2] for l in r.stdout.splitlines()] == [[a, title] for a in axes], r)
+
             r = run(*on, "--axis", first, "download", prog)
             check(f"{family}: download to axis {first}", r.returncode == 0, r)
 
