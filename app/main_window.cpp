@@ -1,5 +1,7 @@
 // MainWindow: composition and wiring.
 #include "main_window.h"
+
+#include "machine/axes_dock.h"
 #include "status_bar_room.h"
 #include "drive/terminal_tabs.h"
 
@@ -103,6 +105,9 @@ TerminalWidget* MainWindow::terminal() const {
 }
 
 void MainWindow::connectDrive(const ConnectionChoice& choice) {
+    m_axis = choice.line ? choice.axis : QString();
+    m_axisLine = choice.line;
+    updateTitle();
     FamilyWorkspace* next = workspace(choice.family);
     if (choice.family != drive_core::DriveFamily::Bds5 && !next) {
         showLinkError(tr("This build of ServoDesk has no %1 support.").arg(ConnectionChoice::familyName(choice.family)));
@@ -218,6 +223,9 @@ void MainWindow::openSampleProgram(drive_core::DriveFamily family) {
 void MainWindow::disconnectActive() {
     if (FamilyWorkspace* w = workspace(m_family)) w->deactivate();
     else m_connection->disconnectDrive();
+    m_axis.clear();
+    m_axisLine.reset();
+    updateTitle();
     updateLinkStatus();
 }
 
@@ -254,6 +262,17 @@ void MainWindow::createMenus() {
     m_driveActions->addToMenu(drive);
     m_bds5Only << drive->actions().mid(common);
 
+    QMenu* machine = menuBar()->addMenu(tr("&Machine"));
+    QAction* axesPanel = m_axesDock->toggleViewAction();
+    axesPanel->setText(tr("&Axes Panel"));
+    axesPanel->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
+    machine->addAction(axesPanel);
+    machine->addSeparator();
+    for (QAction* a : m_axesDock->menuActions()) {
+        machine->addAction(a);
+        connect(a, &QAction::triggered, m_axesDock, [this] { m_axesDock->show(); m_axesDock->raise(); });
+    }
+
     QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* toggleTerminal = m_terminalDock->toggleViewAction();
     toggleTerminal->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
@@ -262,6 +281,7 @@ void MainWindow::createMenus() {
     view->addAction(m_helpBrowser->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
     view->addAction(m_variablesDock->toggleViewAction());
+    view->addAction(axesPanel);
     view->addAction(terminalTabAction(*this, m_terminalDock, m_errorLogDock, m_errorLogDock->windowTitle(), this));
     for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_ioPanel, m_dep01Panel})
         view->addAction(dock->toggleViewAction());
@@ -323,6 +343,16 @@ void MainWindow::createDriveTools() {
     }
     addDockWidget(Qt::BottomDockWidgetArea, m_errorLogDock);
     m_errorLogDock->hide();
+    m_axesDock = new AxesDock(this); // issue 21: a multidrop line's axes, hidden until asked for
+    addDockWidget(Qt::RightDockWidgetArea, m_axesDock);
+    m_axesDock->hide();
+    connect(m_axesDock, &AxesDock::axisChosen, this, &MainWindow::connectDrive);
+    connect(m_axesDock, &AxesDock::lineNeeded, this, [this](const std::shared_ptr<serialport::Link>& line) {
+        if (m_axisLine && m_axisLine == line) { // one conversation at a time on a line
+            terminal()->displayNotice(tr("Left axis %1: the Axes panel needs the line").arg(m_axis));
+            disconnectActive();
+        }
+    });
     connect(m_errorLogDock, &ErrorLogDock::goToProgramLine, this,
             [this](int driveLine) { ProgramLineJump::show(*editor(), driveLine); });
 }
@@ -397,7 +427,10 @@ void MainWindow::followEditor(editor::ProgramEditor* current) {
 }
 
 void MainWindow::updateTitle() {
-    setWindowTitle(tr("%1[*] \u2014 ServoDesk").arg(m_documents->displayName()));
+    if (m_axis.isEmpty())
+        setWindowTitle(tr("%1[*] \u2014 ServoDesk").arg(m_documents->displayName()));
+    else
+        setWindowTitle(tr("%1[*] \u2014 axis %2 \u2014 ServoDesk").arg(m_documents->displayName(), m_axis));
     setWindowModified(editor() && editor()->isModified());
 }
 

@@ -23,6 +23,7 @@ class ProgramEditor;
 
 namespace app {
 
+class AxesDock;
 class CaptureDock;
 class CaptureLog;
 class ConnectionDialog;
@@ -86,6 +87,10 @@ public:
     ErrorLogDock* errorLogDock() const { return m_errorLogDock; }
     IoPanel* ioPanel() const { return m_ioPanel; }
     Dep01Panel* dep01Panel() const { return m_dep01Panel; }
+    // Issue 21: the Axes panel and the Machine menu (a multidrop line's axes, backup, compare, restore).
+    AxesDock* axesDock() const { return m_axesDock; }
+    // The axis of a multidrop line every tool talks to, "" for a single drive.
+    const QString& axisInUse() const { return m_axis; }
     // Issues 8 and 9: the SC750 and PMC-960 workspaces. The window takes ownership; menus and docks are
     // added hidden and shown while the workspace's family is the connected one.
     void addWorkspace(FamilyWorkspace* workspace);
@@ -137,6 +142,9 @@ private:
     ErrorLogDock* m_errorLogDock = nullptr;
     IoPanel* m_ioPanel = nullptr;
     Dep01Panel* m_dep01Panel = nullptr;
+    AxesDock* m_axesDock = nullptr;
+    QString m_axis;                              // the axis in use on m_axisLine, "" for a single drive
+    std::shared_ptr<serialport::Link> m_axisLine; // the Axes panel's line the connection is on, if any
     QLabel* m_linkLabel = nullptr;
     QLabel* m_portLabel = nullptr;
     QLabel* m_modeLabel = nullptr;

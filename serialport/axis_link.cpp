@@ -66,6 +66,41 @@ QStringList allAxisIds(DriveFamily family) {
     return ids;
 }
 
+QStringList parseAxisIds(DriveFamily family, const QString& text, QString& error) {
+    QStringList ids;
+    const QStringList all = allAxisIds(family);
+    const bool single = family != DriveFamily::Sc750;
+    const QString upper = text.toUpper().remove(QLatin1Char(' '));
+    QStringList parts;
+    if (upper.contains(QLatin1Char(',')))
+        parts = upper.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    else if (single && !upper.contains(QLatin1Char('-'))) // "ABD"
+        for (const QChar c : upper) parts << QString(c);
+    else if (!upper.isEmpty())
+        parts << upper;
+    for (const QString& part : parts) {
+        const qsizetype dash = part.indexOf(QLatin1Char('-'), 1);
+        const QString from = dash > 0 ? part.left(dash) : part, to = dash > 0 ? part.mid(dash + 1) : part;
+        for (const QString& end : {from, to}) {
+            if (const QString problem = axisIdProblem(family, end); !problem.isEmpty()) {
+                error = problem;
+                return {};
+            }
+        }
+        const qsizetype a = all.indexOf(single ? from : QString::number(from.toInt()));
+        const qsizetype b = all.indexOf(single ? to : QString::number(to.toInt()));
+        if (a < 0 || b < a) {
+            error = QStringLiteral("\"%1\" is not a range of axis IDs (first-last, in the order %2 ... %3)")
+                        .arg(part, all.first(), all.last());
+            return {};
+        }
+        for (qsizetype i = a; i <= b; ++i)
+            if (!ids.contains(all[i])) ids << all[i];
+    }
+    if (ids.isEmpty()) error = QStringLiteral("no axis IDs given");
+    return ids;
+}
+
 AxisLink::AxisLink(Link& line, DriveFamily family, QString id, QObject* parent)
     : Link(parent), m_line(&line), m_family(family), m_id(std::move(id)) {
     connect(&line, &Link::bytesReceived, this, [this](const QByteArray& bytes) {
@@ -83,6 +118,11 @@ AxisLink::AxisLink(Link& line, DriveFamily family, QString id, QObject* parent)
         m_open = false;
         emit closed();
     });
+}
+
+AxisLink::AxisLink(std::shared_ptr<Link> line, DriveFamily family, QString id, QObject* parent)
+    : AxisLink(*line, family, std::move(id), parent) {
+    m_keep = std::move(line);
 }
 
 AxisLink::~AxisLink() {

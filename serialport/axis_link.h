@@ -19,6 +19,8 @@
 
 #include <QPointer>
 
+#include <memory>
+
 namespace serialport {
 
 // The bytes that select axis id of a family's bus; empty when id is no such axis ID (axisIdProblem says why).
@@ -29,12 +31,17 @@ QByteArray axisReleaseBytes(drive_core::DriveFamily family);
 QString axisIdProblem(drive_core::DriveFamily family, const QString& id);
 // The IDs an axis of the family can have, in the order a scan calls them (SC750: "0" ... "254").
 QStringList allAxisIds(drive_core::DriveFamily family);
+// A list of IDs as a user writes it: "A,B,D", "ABD" (one-character IDs), ranges "0-31" or "A-H"; empty with
+// error set when an ID is not the family's or a range is malformed. Repeats are dropped.
+QStringList parseAxisIds(drive_core::DriveFamily family, const QString& text, QString& error);
 
 class AxisLink final : public Link {
     Q_OBJECT
 public:
     // line must outlive this link, or be closed (and this link with it) before it goes.
     AxisLink(Link& line, drive_core::DriveFamily family, QString id, QObject* parent = nullptr);
+    // The same, keeping the line alive while this link lives (the IDE's axis connections share the Axes panel's).
+    AxisLink(std::shared_ptr<Link> line, drive_core::DriveFamily family, QString id, QObject* parent = nullptr);
     ~AxisLink() override;
 
     const QString& id() const { return m_id; }
@@ -55,6 +62,7 @@ private:
     void select();
     void put(const QByteArray& bytes);
 
+    std::shared_ptr<Link> m_keep;
     QPointer<Link> m_line;
     drive_core::DriveFamily m_family;
     QString m_id;

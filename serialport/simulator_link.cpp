@@ -86,7 +86,11 @@ void SimulatorLink::readMonitor(std::function<void(const drive_core::MonitorTrac
 }
 
 QString SimulatorLink::description() const {
-    return tr("Simulated %1").arg(QString::fromLatin1(drive_core::familyName(m_family)).toUpper());
+    const QString family = QString::fromLatin1(drive_core::familyName(m_family)).toUpper();
+    if (m_options.axes.empty()) return tr("Simulated %1").arg(family);
+    QStringList ids;
+    for (const std::string& id : m_options.axes) ids << QString::fromStdString(id);
+    return tr("Simulated %1 line (axes %2)").arg(family, ids.join(QLatin1Char(',')));
 }
 
 } // namespace serialport

@@ -3,6 +3,7 @@
 
 #include "drive_core/drive_factory.h"
 
+#include "serialport/axis_link.h"
 #include "serialport/port_link.h"
 #include "serialport/simulator_link.h"
 
@@ -37,12 +38,15 @@ void ConnectionChoice::save(QSettings& settings) const {
 }
 
 std::unique_ptr<serialport::Link> ConnectionChoice::makeLink() const {
+    if (line && !axis.isEmpty()) return std::make_unique<serialport::AxisLink>(line, family, axis);
     if (kind == Kind::SerialPort) return serialport::makePortLink(portName, baudRate, family);
     return std::make_unique<serialport::SimulatorLink>(
         family, serialport::SimulatorLink::Options{.baudRate = baudRate});
 }
 
 QString ConnectionChoice::portText() const {
+    if (line && !axis.isEmpty())
+        return QCoreApplication::translate("app::ConnectionChoice", "axis %1 on %2").arg(axis, line->description());
     if (kind == Kind::SerialPort)
         return QCoreApplication::translate("app::ConnectionChoice", "%1, %2 baud")
             .arg(portName)

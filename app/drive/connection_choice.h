@@ -23,6 +23,20 @@ struct ConnectionChoice {
     QString portName;    // "/dev/ttyUSB0", "ttyS0", "/dev/pts/5"; used when kind is SerialPort
     int baudRate = 9600; // the serial port's rate, or the pace of the simulated drive's output
     drive_core::DriveFamily family = drive_core::DriveFamily::Bds5;
+    // One axis of a multidrop line (issue 21): the line the Axes panel holds open, and the axis's ID on it.
+    // makeLink() then gives an AxisLink that selects the axis; the line stays open when the IDE moves to
+    // another axis. Neither is saved: a line is the panel's, set up again each session.
+    std::shared_ptr<serialport::Link> line;
+    QString axis;
+
+    static ConnectionChoice onAxis(std::shared_ptr<serialport::Link> line, drive_core::DriveFamily family,
+                                   const QString& axis) {
+        ConnectionChoice c;
+        c.family = family;
+        c.line = std::move(line);
+        c.axis = axis;
+        return c;
+    }
 
     static ConnectionChoice simulator(drive_core::DriveFamily family = drive_core::DriveFamily::Bds5) {
         ConnectionChoice c;
@@ -48,7 +62,7 @@ struct ConnectionChoice {
 
     // A new, unopened link for this choice.
     std::unique_ptr<serialport::Link> makeLink() const;
-    // For the status bar: "Simulated BDS5, 9600 baud" or "/dev/pts/5, 9600 baud".
+    // For the status bar: "Simulated BDS5, 9600 baud", "/dev/pts/5, 9600 baud", "axis B on /dev/pts/5 9600 8N1".
     QString portText() const;
 
     bool operator==(const ConnectionChoice&) const = default;

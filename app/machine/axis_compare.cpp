@@ -148,6 +148,16 @@ QString settingLine(DriveFamily family, const QString& name, const QString& valu
     return {};
 }
 
+QStringList settingLines(DriveFamily family, const QList<NamedValue>& values) {
+    QStringList lines;
+    for (const NamedValue& v : values) lines << settingLine(family, v.name, v.value);
+    if (family == DriveFamily::Pmc960 && !lines.isEmpty()) {
+        lines.prepend(QStringLiteral("SW1"));
+        lines.append(QStringLiteral("SW0"));
+    }
+    return lines;
+}
+
 QStringList linkSettings(DriveFamily family) {
     if (family == DriveFamily::Bds5) return {QStringLiteral("ADDR"), QStringLiteral("BAUD"), QStringLiteral("ABAUD")};
     return {}; // the SC750's AXIS.ADDR is its DIP switch; the PMC-960's file leaves THB, THC, THI out already

@@ -42,6 +42,9 @@ QList<CompareRow> differences(const QList<CompareRow>& rows);
 // The line that sets one variable on the drive, as the family's command line takes it ("VMAX 3000",
 // "KVP=0.08", "TGP16").
 QString settingLine(drive_core::DriveFamily family, const QString& name, const QString& value);
+// The lines that set these variables, with what the family needs around them (the PMC-960's T table is
+// written between SW1 and SW0, L1701-1711).
+QStringList settingLines(drive_core::DriveFamily family, const QList<NamedValue>& values);
 // The variables that set the line itself (BDS5 ADDR, BAUD, ABAUD: a new ADDR puts the axis to sleep at once,
 // L5424), which a restore does not send: each axis keeps the ones it answers by. Compare still lists them.
 QStringList linkSettings(drive_core::DriveFamily family);
