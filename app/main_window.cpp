@@ -345,6 +345,7 @@ void MainWindow::createDriveTools() {
     m_errorLogDock->hide();
     m_axesDock = new AxesDock(this); // issue 21: a multidrop line's axes, hidden until asked for
     addDockWidget(Qt::RightDockWidgetArea, m_axesDock);
+    tabifyDockWidget(m_outlineDock, m_axesDock); // the whole height for the table; the Outline a tab away
     m_axesDock->hide();
     connect(m_axesDock, &AxesDock::axisChosen, this, &MainWindow::connectDrive);
     connect(m_axesDock, &AxesDock::lineNeeded, this, [this](const std::shared_ptr<serialport::Link>& line) {

@@ -62,6 +62,9 @@ int usage(int code) {
                  "                    master-wave sine|square|triangle AMP_HZ FREQ_HZ   master-wave off\n"
                  "                    analog-in V (the SC750's analog input, volts)\n"
                  "                    feedback on|off   power-cycle   status\n"
+                 "                    with --axes: axis ID (the axis the others reach)   line-shaft MASTER\n"
+                 "                    FOLLOWER (MASTER's encoder output, 4096 counts a rev, drives FOLLOWER's\n"
+                 "                    master input: an electronic line shaft)   line-shaft off\n"
                  "                  With --pty, \"CONTROL PATH\" is printed after the PTY line.\n");
     return code;
 }

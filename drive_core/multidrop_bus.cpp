@@ -103,6 +103,39 @@ std::string MultidropBus::takeTransmitted() {
 
 void MultidropBus::step(Microseconds dt) {
     for (auto& a : m_axes) a->step(dt);
+    if (m_shafts.empty() || dt.count() <= 0) return;
+    const double dt_s = double(dt.count()) * 1e-6;
+    for (LineShaft& shaft : m_shafts) {
+        const double position_rev = m_axes[shaft.master]->controls()->status().position_rev;
+        const double counts = (position_rev - shaft.lastPosition_rev) * kLineShaftCountsPerRev;
+        shaft.lastPosition_rev = position_rev;
+        m_axes[shaft.follower]->controls()->setMasterFrequency_Hz(counts / dt_s);
+    }
+}
+
+bool MultidropBus::setLineShaft(const std::string& master, const std::string& follower, std::string& why) {
+    const auto index = [this](const std::string& id) { return std::size_t(std::find(m_ids.begin(), m_ids.end(), id) - m_ids.begin()); };
+    const std::size_t m = index(master), f = index(follower);
+    if (m == m_ids.size() || f == m_ids.size()) {
+        why = "no axis " + (m == m_ids.size() ? master : follower) + " on this line";
+        return false;
+    }
+    if (m == f) {
+        why = "an axis cannot follow itself";
+        return false;
+    }
+    if (!m_axes[m]->controls() || !m_axes[f]->controls()) {
+        why = "these drives have no bench to wire";
+        return false;
+    }
+    std::erase_if(m_shafts, [f](const LineShaft& s) { return s.follower == f; }); // one master a follower
+    m_shafts.push_back({m, f, m_axes[m]->controls()->status().position_rev});
+    return true;
+}
+
+void MultidropBus::clearLineShafts() {
+    for (const LineShaft& s : m_shafts) m_axes[s.follower]->controls()->setMasterFrequency_Hz(0);
+    m_shafts.clear();
 }
 
 Microseconds MultidropBus::now() const {

@@ -52,6 +52,16 @@ public:
     bool setBenchAxis(const std::string& id);
     std::size_t benchAxis() const { return m_bench; }
 
+    // The bench's electronic line shaft (issue 21): master's encoder output wired to follower's master
+    // (external encoder) input, so a gearbox or cam follows a real moving axis. The encoder output gives
+    // kLineShaftCountsPerRev quadrature counts a motor revolution (chosen: a 1024-line encoder emulation; the
+    // follower's GEARI/GEARO, or its family's ratio, scales them). Counted exactly: what the master turned in
+    // one step reaches the follower in the next. A follower has one master; false with why when an ID is
+    // unknown, the two are one axis, or the family's drive has no master input.
+    static constexpr double kLineShaftCountsPerRev = 4096;
+    bool setLineShaft(const std::string& master, const std::string& follower, std::string& why);
+    void clearLineShafts();
+
 private:
     MultidropBus(DriveFamily family, std::vector<std::string> ids, std::vector<std::unique_ptr<Drive>> axes);
     Drive& bench() const { return *m_axes[m_bench]; }
@@ -60,6 +70,11 @@ private:
     std::vector<std::string> m_ids;
     std::vector<std::unique_ptr<Drive>> m_axes;
     std::size_t m_bench = 0;
+    struct LineShaft {
+        std::size_t master = 0, follower = 0;
+        double lastPosition_rev = 0;
+    };
+    std::vector<LineShaft> m_shafts;
 };
 
 } // namespace drive_core

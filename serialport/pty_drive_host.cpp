@@ -23,6 +23,19 @@ namespace {
 constexpr auto kTick = std::chrono::microseconds(1000);
 constexpr int kMaxTicksPerWake = 200;
 constexpr auto kDrainAfterEof = std::chrono::milliseconds(300); // let the drive answer the last line
+
+// The bench's "line-shaft MASTER FOLLOWER" and "line-shaft off" (MultidropBus::setLineShaft).
+std::string lineShaft(drive_core::MultidropBus* bus, const std::string& args) {
+    if (!bus) return "ERROR a line shaft joins two axes of a bus (--axes)";
+    if (args == "off") {
+        bus->clearLineShafts();
+        return "OK";
+    }
+    const std::size_t space = args.find(' ');
+    if (space == std::string::npos) return "ERROR line-shaft MASTER FOLLOWER, or line-shaft off";
+    std::string why;
+    return bus->setLineShaft(args.substr(0, space), args.substr(space + 1), why) ? "OK" : "ERROR " + why;
+}
 } // namespace
 
 PtyDriveHost::PtyDriveHost(std::unique_ptr<drive_core::Drive> drive, Options options)
@@ -87,6 +100,8 @@ void PtyDriveHost::serveControl() {
             if (line.rfind("axis ", 0) == 0) { // which axis of a bus the bench reaches
                 answer = bus && bus->setBenchAxis(line.substr(5)) ? std::string("OK")
                                                                   : "ERROR no axis " + line.substr(5) + " on this line";
+            } else if (line.rfind("line-shaft ", 0) == 0) { // "line-shaft A B": A's encoder output drives B
+                answer = lineShaft(bus, line.substr(11));
             } else {
                 drive_core::SimulatorControls* controls = m_drive->controls();
                 answer = controls ? drive_core::runSimulatorCommand(*controls, line)

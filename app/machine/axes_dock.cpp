@@ -63,6 +63,7 @@ AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -250,8 +251,8 @@ void AxesDock::scan() {
             setBusy(false);
             showScan(axes);
             setStatus(axes.isEmpty() ? tr("No axis answered on %1 (%2 IDs called).").arg(m_line->description()).arg(n)
-                                     : tr("%n axis/axes answered on %1 (%2 IDs called). Double-click one to use it.",
-                                          nullptr, int(axes.size()))
+                                     : tr("%1 answered on %2 (%3 IDs called). Double-click one to use it.")
+                                           .arg(axes.size() == 1 ? tr("1 axis") : tr("%1 axes").arg(axes.size()))
                                            .arg(m_line->description())
                                            .arg(n));
             emit scanFinished(int(axes.size()));

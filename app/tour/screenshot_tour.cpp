@@ -1,6 +1,8 @@
 // ScreenshotTour: the steps, and the timer-driven walk through them.
 #include "screenshot_tour.h"
 
+#include "machine_tour_steps.h"
+
 #include "connection_dialog.h"
 #include "docks_tour_steps.h"
 #include "drive_connection.h"
@@ -96,6 +98,7 @@ std::vector<ScreenshotTour::Step> ScreenshotTour::buildSteps() {
     for (Step& step : sc750TourSteps(m_window)) steps.push_back(std::move(step)); // last: it switches family
     for (Step& step : pmc960TourSteps(m_window)) steps.push_back(std::move(step)); // switches family too
     for (Step& step : tuningTourSteps(m_window)) steps.push_back(std::move(step));  // each family, then the BDS5
+    for (Step& step : machineTourSteps(m_window)) steps.push_back(std::move(step)); // a line of its own
     return steps;
 }
 

@@ -49,6 +49,10 @@ def main(sim, cli_path):
             port.write(b"P I1\r")
             assert read_until(port, b"\r\nC->") == b"P I1\r\n           1\r\nC->"
             assert bench(control, "axis Q").startswith("ERROR")
+            # The electronic line shaft: A's encoder output into D's master input; a bad pair is refused.
+            assert bench(control, "line-shaft A D") == "OK"
+            assert bench(control, "line-shaft A Q") == "ERROR no axis Q on this line"
+            assert bench(control, "line-shaft off") == "OK"
             passed += 1
         # servodesk-cli --axis wakes the axis it names and talks to it alone; an ID not on the line is said.
         def cli(*args):
