@@ -262,7 +262,7 @@ void MainWindow::createMenus() {
     m_driveActions->addToMenu(drive);
     m_bds5Only << drive->actions().mid(common);
 
-    QMenu* machine = menuBar()->addMenu(tr("&Machine"));
+    QMenu* machine = menuBar()->addMenu(tr("Mach&ine"));
     QAction* axesPanel = m_axesDock->toggleViewAction();
     axesPanel->setText(tr("&Axes Panel"));
     axesPanel->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
@@ -281,7 +281,6 @@ void MainWindow::createMenus() {
     view->addAction(m_helpBrowser->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
     view->addAction(m_variablesDock->toggleViewAction());
-    view->addAction(axesPanel);
     view->addAction(terminalTabAction(*this, m_terminalDock, m_errorLogDock, m_errorLogDock->windowTitle(), this));
     for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_ioPanel, m_dep01Panel})
         view->addAction(dock->toggleViewAction());

@@ -45,6 +45,11 @@ QByteArray axisSelectBytes(DriveFamily family, const QString& id) {
     return {};
 }
 
+QByteArray axisBroadcastBytes(DriveFamily family, const QString& line) {
+    if (family != DriveFamily::Bds5 || line.isEmpty()) return {};
+    return QByteArray(1, kBds5Wake) + '*' + line.toLatin1() + '\r' + axisReleaseBytes(family);
+}
+
 QByteArray axisReleaseBytes(DriveFamily family) {
     return family == DriveFamily::Bds5 ? QByteArray("\\\r") : QByteArray();
 }

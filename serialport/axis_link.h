@@ -25,6 +25,9 @@ namespace serialport {
 
 // The bytes that select axis id of a family's bus; empty when id is no such axis ID (axisIdProblem says why).
 QByteArray axisSelectBytes(drive_core::DriveFamily family, const QString& id);
+// The bytes that make every axis execute line and none answer, ending with no axis selected; empty when the
+// family's line has no broadcast (only the BDS5's: '\*', L5449-5457).
+QByteArray axisBroadcastBytes(drive_core::DriveFamily family, const QString& line);
 // The bytes that leave no axis selected, empty when the family has none (a logon of another unit does it).
 QByteArray axisReleaseBytes(drive_core::DriveFamily family);
 // "" when id can be an axis of the family's bus; else why not, with the manual's rule.

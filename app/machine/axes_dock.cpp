@@ -17,6 +17,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -84,6 +85,8 @@ AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     m_compareAction = new QAction(tr("&Compare with Backup..."), this);
     m_compareBackupsAction = new QAction(tr("Compare &Two Backups..."), this);
     m_restoreAction = new QAction(tr("&Restore Machine..."), this);
+    m_broadcastAction = new QAction(tr("Broa&dcast..."), this);
+    m_broadcastAction->setToolTip(tr("Send one command line to every axis at once; none answers (BDS5)"));
     connect(m_scanAction, &QAction::triggered, this, &AxesDock::scan);
     connect(m_useAction, &QAction::triggered, this, [this] {
         const int row = m_table->currentRow();
@@ -94,6 +97,13 @@ AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     connect(m_compareAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::compareWith, true); });
     connect(m_restoreAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::restoreFrom, true); });
     connect(m_compareBackupsAction, &QAction::triggered, this, &AxesDock::compareBackups);
+    connect(m_broadcastAction, &QAction::triggered, this, [this] {
+        bool ok = false;
+        const QString line = QInputDialog::getText(this, tr("Broadcast"),
+                                                   tr("A command line every axis executes (none answers):"),
+                                                   QLineEdit::Normal, QString(), &ok);
+        if (ok && !line.trimmed().isEmpty()) broadcast(line.trimmed());
+    });
     connect(m_table, &QTableWidget::cellDoubleClicked, this, [this](int row) { useAxis(m_table->item(row, kId)->text()); });
     connect(m_cancel, &QPushButton::clicked, this, &AxesDock::cancel);
 
@@ -147,6 +157,7 @@ QWidget* AxesDock::makeLineForm() {
     f->addRow(tr("Scan calls:"), m_callIds);
     connect(m_familyBox, &QComboBox::currentIndexChanged, this, [this] {
         m_callIds->setText(callIds(family()));
+        m_broadcastAction->setEnabled(!serialport::axisBroadcastBytes(family(), QStringLiteral("P")).isEmpty());
         if (m_kindBox->currentIndex() == 0) m_where->setText(simulatedIds(family()));
     });
     connect(m_kindBox, &QComboBox::currentIndexChanged, this, &AxesDock::showLineKind);
@@ -181,7 +192,8 @@ void AxesDock::setPortLine(DriveFamily f, const QString& port, int baud) {
 }
 
 QList<QAction*> AxesDock::menuActions() const {
-    return {m_scanAction, m_useAction, m_backUpAction, m_compareAction, m_compareBackupsAction, m_restoreAction};
+    return {m_scanAction, m_useAction, m_broadcastAction, m_backUpAction, m_compareAction, m_compareBackupsAction,
+            m_restoreAction};
 }
 
 QString AxesDock::statusText() const {
@@ -227,6 +239,7 @@ bool AxesDock::ensureLine() {
 
 void AxesDock::setBusy(bool busy) {
     for (QAction* a : menuActions()) a->setEnabled(!busy);
+    m_broadcastAction->setEnabled(!busy && !serialport::axisBroadcastBytes(family(), QStringLiteral("P")).isEmpty());
     m_progress->setVisible(busy);
     m_cancel->setVisible(busy);
     if (busy) m_progress->setValue(0);
@@ -305,25 +318,46 @@ void AxesDock::backUpTo(const QString& dir) {
 }
 
 void AxesDock::compareWith(const QString& dir) {
-    QString error;
-    const auto project = machine::readMachineProject(dir, error);
-    if (!project) return setStatus(error);
-    if (project->family() != family())
-        return setStatus(tr("%1 is a %2 machine; the line is set up for the %3.")
-                             .arg(QDir::toNativeSeparators(dir), ConnectionChoice::familyName(project->family()),
-                                  ConnectionChoice::familyName(family())));
-    runJob(MachineJob::Kind::Compare, *project, dir);
+    if (const auto project = projectOfThisLine(dir)) runJob(MachineJob::Kind::Compare, *project, dir);
 }
 
 void AxesDock::restoreFrom(const QString& dir) {
+    if (const auto project = projectOfThisLine(dir)) runJob(MachineJob::Kind::Restore, *project, dir);
+}
+
+std::optional<MachineProject> AxesDock::projectOfThisLine(const QString& dir) {
     QString error;
     const auto project = machine::readMachineProject(dir, error);
-    if (!project) return setStatus(error);
-    if (project->family() != family())
-        return setStatus(tr("%1 is a %2 machine; the line is set up for the %3.")
-                             .arg(QDir::toNativeSeparators(dir), ConnectionChoice::familyName(project->family()),
-                                  ConnectionChoice::familyName(family())));
-    runJob(MachineJob::Kind::Restore, *project, dir);
+    if (!project) {
+        setStatus(error);
+        return std::nullopt;
+    }
+    if (project->family() != family()) {
+        setStatus(tr("%1 is a %2 machine; the line is set up for the %3.")
+                      .arg(QDir::toNativeSeparators(dir), ConnectionChoice::familyName(project->family()),
+                           ConnectionChoice::familyName(family())));
+        return std::nullopt;
+    }
+    return project;
+}
+
+void AxesDock::broadcast(const QString& line) {
+    if (isBusy() || !ensureLine()) return;
+    const QByteArray bytes = serialport::axisBroadcastBytes(family(), line);
+    if (bytes.isEmpty())
+        return setStatus(tr("The %1's line has no broadcast: send to each axis in turn.").arg(ConnectionChoice::familyName(family())));
+    emit lineNeeded(m_line);
+    const auto send = [this, bytes, line] {
+        m_line->write(bytes);
+        setStatus(tr("Broadcast \"%1\" to every axis on %2 (none answers a broadcast).").arg(line, m_line->description()));
+    };
+    if (m_line->isOpen()) return send();
+    auto* once = new QObject(this);
+    connect(m_line.get(), &serialport::Link::opened, once, [once, send] {
+        delete once;
+        send();
+    });
+    m_line->open();
 }
 
 void AxesDock::cancel() {

@@ -17,6 +17,7 @@
 #include <QPointer>
 
 #include <memory>
+#include <optional>
 
 class QAction;
 class QComboBox;
@@ -46,6 +47,9 @@ public:
     void backUpTo(const QString& dir);
     void compareWith(const QString& dir);
     void restoreFrom(const QString& dir);
+    // Every axis executes line and none answers (the BDS5's '\*'); refused, in the status, for a family
+    // whose line has no broadcast.
+    void broadcast(const QString& line);
     void cancel();
 
     bool isBusy() const { return m_job || m_scan || m_errand; }
@@ -75,6 +79,8 @@ private:
     void setBusy(bool busy);
     void setStatus(const QString& text);
     machine::MachineProject scannedProject() const;
+    // dir's project when it is of the line's family; nullopt, with the status saying why, when not.
+    std::optional<machine::MachineProject> projectOfThisLine(const QString& dir);
     void chooseFolderAnd(void (AxesDock::*then)(const QString&), bool existing);
     void startErrand(const QString& id, const QStringList& lines, const QString* program);
     void compareBackups();
@@ -94,6 +100,7 @@ private:
     QAction* m_compareAction;
     QAction* m_compareBackupsAction;
     QAction* m_restoreAction;
+    QAction* m_broadcastAction;
     std::shared_ptr<serialport::Link> m_line;
     QString m_lineKey; // what m_line was made from: a new form makes a new line
     double m_speed = 1;

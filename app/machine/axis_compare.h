@@ -36,6 +36,11 @@ QList<CompareRow> compareVariables(drive_core::DriveFamily family, const QString
 // Every line of both programs, aligned; trailing blanks and the line ends do not count.
 QList<CompareRow> compareProgram(const QStringList& left, const QStringList& right);
 
+// "1 difference", "3 differences": what a report says, singular or plural as English has it.
+inline QString counted(qsizetype n, const QString& one, const QString& many) {
+    return QString::number(n) + QLatin1Char(' ') + (n == 1 ? one : many);
+}
+
 // The differing rows only.
 QList<CompareRow> differences(const QList<CompareRow>& rows);
 

@@ -88,7 +88,7 @@ MachineCompareDialog::MachineCompareDialog(QList<AxisReport> reports, machine::M
         }
     if (m_axes->currentRow() < 0 && m_axes->count() > 0) m_axes->setCurrentRow(0);
     setStatus(differenceCount() == 0 ? tr("Every axis matches its files.")
-                                     : tr("%n difference(s) in all.", nullptr, differenceCount()));
+                                     : tr("%1 in all.").arg(machine::counted(differenceCount(), tr("difference"), tr("differences"))));
 }
 
 void MachineCompareDialog::fillAxes() {
@@ -99,7 +99,7 @@ void MachineCompareDialog::fillAxes() {
         const qsizetype n = machine::differences(r.rows).size();
         QString text = r.outcome == AxisReport::Outcome::Failed ? tr("Axis %1 \u2014 failed").arg(r.id)
                        : n == 0                                 ? tr("Axis %1 \u2014 matches").arg(r.id)
-                                                                : tr("Axis %1 \u2014 %n difference(s)", nullptr, int(n)).arg(r.id);
+                                                                : tr("Axis %1 \u2014 %2").arg(r.id, machine::counted(n, tr("difference"), tr("differences")));
         auto* item = new QListWidgetItem(text, m_axes);
         item->setToolTip(r.message);
         if (n > 0 || r.outcome == AxisReport::Outcome::Failed) item->setBackground(kDiffers);
@@ -181,7 +181,7 @@ void MachineCompareDialog::takeDrives() {
         r->rows[i].left = r->rows[i].right;
         r->rows[i].differs = false;
     }
-    setStatus(tr("Wrote %n row(s) of axis %1 into its files.", nullptr, int(rows.size())).arg(r->id));
+    setStatus(tr("Wrote %1 of axis %2 into its files.").arg(machine::counted(rows.size(), tr("row"), tr("rows")), r->id));
     fillAxes();
     fillTable();
 }
@@ -210,7 +210,7 @@ void MachineCompareDialog::takeFiles() {
         emit downloadToDrive(r->id, text);
         return;
     }
-    setStatus(tr("Sending %n value(s) to axis %1...", nullptr, int(values.size())).arg(r->id));
+    setStatus(tr("Sending %1 to axis %2...").arg(machine::counted(values.size(), tr("value"), tr("values")), r->id));
     emit sendToDrive(r->id, lines);
 }
 

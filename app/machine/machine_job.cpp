@@ -185,22 +185,26 @@ void MachineJob::onVariables(const VariableResult& r) {
     }
     m_report.variables = r.text;
     switch (m_kind) {
-    case Kind::Backup: return endAxis(AxisReport::Outcome::Done, tr("read %1 program lines and its variables").arg(m_report.program.size()));
+    case Kind::Backup:
+        return endAxis(AxisReport::Outcome::Done,
+                       m_report.program.isEmpty() ? tr("read its variables (it holds no program)")
+                                                  : tr("read %1 and its variables")
+                                                        .arg(counted(m_report.program.size(), tr("program line"), tr("program lines"))));
     case Kind::Compare: {
         m_report.rows = compareVariables(m_report.family, m_fileVariables, m_report.variables);
         if (!m_project.axes[m_at].programFile.isEmpty())
             m_report.rows += compareProgram(linesOf(m_fileProgram), m_report.program);
         const qsizetype n = differences(m_report.rows).size();
         return endAxis(n == 0 ? AxisReport::Outcome::Done : AxisReport::Outcome::Differs,
-                       n == 0 ? tr("the drive matches the files") : tr("%n difference(s) from the files", nullptr, int(n)));
+                       n == 0 ? tr("the drive matches the files") : tr("%1 from the files").arg(counted(n, tr("difference"), tr("differences"))));
     }
     case Kind::Restore: {
         m_report.rows = compareVariables(m_report.family, m_fileVariables, m_report.variables);
         const qsizetype n = differences(m_report.rows).size();
         m_report.driveHolds += n == 0 ? tr("; the file's variables, read back the same")
-                                      : tr("; variables read back with %n difference(s) from the file", nullptr, int(n));
+                                      : tr("; variables read back with %1 from the file").arg(counted(n, tr("difference"), tr("differences")));
         return endAxis(n == 0 ? AxisReport::Outcome::Done : AxisReport::Outcome::Differs,
-                       n == 0 ? tr("restored and checked") : tr("restored, but %n variable(s) read back differently", nullptr, int(n)));
+                       n == 0 ? tr("restored and checked") : tr("restored, but %1 read back differently").arg(counted(n, tr("variable"), tr("variables"))));
     }
     }
 }

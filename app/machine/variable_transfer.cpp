@@ -25,18 +25,16 @@ QString VariableTransfer::fileSuffix(DriveFamily family) {
 
 void VariableTransfer::dump() {
     if (m_session.family() == DriveFamily::Bds5) return bds5(false, QString());
-    auto* t = new ParameterLineTransfer(m_session, this);
-    m_running = t;
-    connect(t, &ParameterLineTransfer::progress, this, &VariableTransfer::progress);
-    connect(t, &ParameterLineTransfer::finished, this, [this, t](const VariableResult& r) {
-        t->deleteLater();
-        emit finished(r);
-    });
-    QTimer::singleShot(0, t, &ParameterLineTransfer::dump);
+    lines([](ParameterLineTransfer& t) { t.dump(); });
 }
 
 void VariableTransfer::send(const QString& fileText) {
     if (m_session.family() == DriveFamily::Bds5) return bds5(true, fileText);
+    lines([fileText](ParameterLineTransfer& t) { t.send(fileText); });
+}
+
+// The other families' files, line by line; begun on the next turn of the loop, as the BDS5's transfers are.
+void VariableTransfer::lines(const std::function<void(ParameterLineTransfer&)>& begin) {
     auto* t = new ParameterLineTransfer(m_session, this);
     m_running = t;
     connect(t, &ParameterLineTransfer::progress, this, &VariableTransfer::progress);
@@ -44,7 +42,7 @@ void VariableTransfer::send(const QString& fileText) {
         t->deleteLater();
         emit finished(r);
     });
-    QTimer::singleShot(0, t, [t, fileText] { t->send(fileText); });
+    QTimer::singleShot(0, t, [t, begin] { begin(*t); });
 }
 
 void VariableTransfer::cancel() {

@@ -9,6 +9,8 @@
 #include <QObject>
 #include <QPointer>
 
+#include <functional>
+
 namespace app::machine {
 
 class VariableTransfer final : public QObject {
@@ -30,6 +32,7 @@ signals:
 
 private:
     void bds5(bool sending, const QString& fileText);
+    void lines(const std::function<void(ParameterLineTransfer&)>& begin);
 
     serialport::DriveSession& m_session;
     QPointer<QObject> m_running;

@@ -136,6 +136,30 @@ private slots:
         QCOMPARE(dock.compareDialog()->differenceCount(), 0);
     }
 
+    // Broadcast (the BDS5's '\*'): every axis takes the line, none answers; the SC750's line has none.
+    void broadcastReachesEveryAxis() {
+        MainWindow window;
+        AxesDock& dock = *window.axesDock();
+        dock.setSimulatorSpeed(20);
+        dock.setSimulatedLine(DriveFamily::Bds5, "A,B,C");
+        QSignalSpy scanned(&dock, &AxesDock::scanFinished);
+        dock.scan();
+        QVERIFY(scanned.wait(kJobMs));
+        dock.broadcast("X7=9");
+        QVERIFY2(dock.statusText().startsWith("Broadcast"), qPrintable(dock.statusText()));
+        for (const QString axis : {"A", "C"}) {
+            dock.useAxis(axis);
+            QTRY_VERIFY_WITH_TIMEOUT(connected(window), kJobMs);
+            QSignalSpy done(window.connection().session(), &serialport::Bds5Session::finished);
+            window.connection().sendCommand("P X7");
+            QVERIFY(done.wait(kJobMs));
+            QCOMPARE(done.last()[1].value<serialport::Bds5Response>().lines.join("").trimmed(), QStringLiteral("9"));
+        }
+        dock.setSimulatedLine(DriveFamily::Sc750, "1,2");
+        dock.broadcast("KVP=1");
+        QVERIFY2(dock.statusText().contains("has no broadcast"), qPrintable(dock.statusText()));
+    }
+
     // A project of another family, or a folder without one, is refused where the user looks.
     void wrongFoldersAreRefused() {
         MainWindow window;
