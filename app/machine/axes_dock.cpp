@@ -14,6 +14,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -85,6 +86,8 @@ AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     m_compareAction = new QAction(tr("&Compare with Backup..."), this);
     m_compareBackupsAction = new QAction(tr("Compare &Two Backups..."), this);
     m_restoreAction = new QAction(tr("&Restore Machine..."), this);
+    m_openAction = new QAction(tr("&Open Machine Project..."), this);
+    m_openAction->setToolTip(tr("Set the line up as a backup's machine.sdm names it, and list its axes"));
     m_broadcastAction = new QAction(tr("Broa&dcast..."), this);
     m_broadcastAction->setToolTip(tr("Send one command line to every axis at once; none answers (BDS5)"));
     connect(m_scanAction, &QAction::triggered, this, &AxesDock::scan);
@@ -97,6 +100,7 @@ AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     connect(m_compareAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::compareWith, true); });
     connect(m_restoreAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::restoreFrom, true); });
     connect(m_compareBackupsAction, &QAction::triggered, this, &AxesDock::compareBackups);
+    connect(m_openAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::openProject, true); });
     connect(m_broadcastAction, &QAction::triggered, this, [this] {
         bool ok = false;
         const QString line = QInputDialog::getText(this, tr("Broadcast"),
@@ -192,7 +196,7 @@ void AxesDock::setPortLine(DriveFamily f, const QString& port, int baud) {
 }
 
 QList<QAction*> AxesDock::menuActions() const {
-    return {m_scanAction, m_useAction, m_broadcastAction, m_backUpAction, m_compareAction, m_compareBackupsAction,
+    return {m_openAction, m_scanAction, m_useAction, m_broadcastAction, m_backUpAction, m_compareAction, m_compareBackupsAction,
             m_restoreAction};
 }
 
@@ -244,6 +248,27 @@ void AxesDock::setBusy(bool busy) {
     m_cancel->setVisible(busy);
     if (busy) m_progress->setValue(0);
     emit busyChanged(busy);
+}
+
+void AxesDock::openProject(const QString& dir) {
+    if (isBusy()) return;
+    QString error;
+    const auto project = machine::readMachineProject(dir, error);
+    if (!project) return setStatus(error);
+    QStringList ids;
+    for (const machine::MachineAxis& a : project->axes) ids << a.id;
+    if (project->port.isEmpty()) setSimulatedLine(project->family(), ids.join(QLatin1Char(',')));
+    else setPortLine(project->family(), project->port, project->baud);
+    m_callIds->setText(ids.join(QLatin1Char(',')));
+    if (!ensureLine()) return;
+    QList<machine::FoundAxis> axes;
+    for (const machine::MachineAxis& a : project->axes) axes.append({a.id, a.family, tr("in the project")});
+    showScan(axes);
+    m_projectDir = dir;
+    setStatus(tr("%1: %2 on %3%4. Scan to see which answer.")
+                  .arg(QDir::toNativeSeparators(dir), machine::counted(axes.size(), tr("axis"), tr("axes")),
+                       m_line->description(),
+                       project->backedUp.isEmpty() ? QString() : tr(", backed up %1").arg(project->backedUp)));
 }
 
 void AxesDock::scan() {
@@ -314,7 +339,9 @@ MachineProject AxesDock::scannedProject() const {
 
 void AxesDock::backUpTo(const QString& dir) {
     if (m_table->rowCount() == 0) return setStatus(tr("Scan the line first: a backup reads every axis the scan found."));
+    if (isBusy()) return;
     runJob(MachineJob::Kind::Backup, scannedProject(), dir);
+    m_projectDir = dir;
 }
 
 void AxesDock::compareWith(const QString& dir) {
@@ -434,7 +461,10 @@ void AxesDock::startErrand(const QString& id, const QStringList& lines, const QS
 
 // Backup: a new folder, named for the moment, inside the one chosen. Compare, Restore: a backup's folder.
 void AxesDock::chooseFolderAnd(void (AxesDock::*then)(const QString&), bool existing) {
-    const QString start = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    // Beside the last backup for a new one, in it for the rest.
+    const QString start = m_projectDir.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
+                          : existing             ? m_projectDir
+                                                 : QFileInfo(m_projectDir).absolutePath();
     const QString dir = QFileDialog::getExistingDirectory(
         this, existing ? tr("A Machine Backup's Folder") : tr("Folder to Back Up Into"), start);
     if (dir.isEmpty()) return;

@@ -42,6 +42,9 @@ public:
     void setSimulatorSpeed(double factor) { m_speed = factor; }
 
     // What the buttons and the Machine menu do, without their folder dialogs (tests, the tour).
+    // A backup's project sets the line up as it names it (its family, its port, or a simulated line of its
+    // axes) and lists its axes; Compare and Restore then start in its folder.
+    void openProject(const QString& dir);
     void scan();
     void useAxis(const QString& id);
     void backUpTo(const QString& dir);
@@ -101,6 +104,8 @@ private:
     QAction* m_compareBackupsAction;
     QAction* m_restoreAction;
     QAction* m_broadcastAction;
+    QAction* m_openAction;
+    QString m_projectDir; // the last backup written or project opened: where the folder dialogs start
     std::shared_ptr<serialport::Link> m_line;
     QString m_lineKey; // what m_line was made from: a new form makes a new line
     double m_speed = 1;

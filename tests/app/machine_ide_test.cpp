@@ -134,6 +134,14 @@ private slots:
             QVERIFY2(dock.table()->item(r, 3)->text().startsWith("done"), qPrintable(dock.table()->item(r, 3)->text()));
         QVERIFY2(runJob(dock, [&] { dock.compareWith(dir); }), qPrintable(dock.statusText()));
         QCOMPARE(dock.compareDialog()->differenceCount(), 0);
+
+        // The backup's project sets the panel up again: its line and its axes.
+        dock.setSimulatedLine(DriveFamily(family), axis);
+        dock.openProject(dir);
+        QCOMPARE(dock.table()->rowCount(), 4);
+        QCOMPARE(dock.table()->item(3, 2)->text(), QStringLiteral("in the project"));
+        QVERIFY2(dock.statusText().contains("backed up 20"), qPrintable(dock.statusText()));
+        QVERIFY2(dock.line()->description().contains(ids), qPrintable(dock.line()->description()));
     }
 
     // Broadcast (the BDS5's '\*'): every axis takes the line, none answers; the SC750's line has none.
