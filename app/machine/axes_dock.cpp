@@ -4,6 +4,7 @@
 #include "machine_compare_dialog.h"
 
 #include "machine/axis_errand.h"
+#include "machine/axis_status.h"
 #include "serialport/axis_link.h"
 #include "serialport/port_link.h"
 #include "serialport/simulator_link.h"
@@ -39,7 +40,7 @@ using machine::MachineProject;
 
 namespace {
 constexpr int kScanWaitMs = 100; // how long a called ID may take to answer (a BDS5 answers in ~10 ms)
-enum Column { kId, kFamily, kAnswer, kLastJob, kColumns };
+enum Column { kId, kFamily, kAnswer, kStatus, kLastJob, kColumns };
 
 QString simulatedIds(DriveFamily f) {
     return f == DriveFamily::Sc750 ? QStringLiteral("1,2,3,4") : QStringLiteral("A,B,C,D");
@@ -61,7 +62,7 @@ QString readText(const QString& path) {
 AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     setObjectName(QStringLiteral("AxesDock"));
     m_table = new QTableWidget(0, kColumns);
-    m_table->setHorizontalHeaderLabels({tr("ID"), tr("Family"), tr("Answer"), tr("Last job")});
+    m_table->setHorizontalHeaderLabels({tr("ID"), tr("Family"), tr("Answer"), tr("Status"), tr("Last job")});
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->hide();
@@ -286,14 +287,14 @@ void AxesDock::scan() {
     connect(m_scan.get(), &machine::AxisScan::finished, this, [this, ids](const QList<machine::FoundAxis>& axes) {
         QTimer::singleShot(0, this, [this, axes, n = ids.size()] {
             m_scan.reset();
-            setBusy(false);
             showScan(axes);
-            setStatus(axes.isEmpty() ? tr("No axis answered on %1 (%2 IDs called).").arg(m_line->description()).arg(n)
-                                     : tr("%1 answered on %2 (%3 IDs called). Double-click one to use it.")
-                                           .arg(axes.size() == 1 ? tr("1 axis") : tr("%1 axes").arg(axes.size()))
-                                           .arg(m_line->description())
-                                           .arg(n));
-            emit scanFinished(int(axes.size()));
+            const QString found =
+                axes.isEmpty() ? tr("No axis answered on %1 (%2 IDs called).").arg(m_line->description()).arg(n)
+                               : tr("%1 answered on %2 (%3 IDs called). Double-click one to use it.")
+                                     .arg(machine::counted(axes.size(), tr("axis"), tr("axes")))
+                                     .arg(m_line->description())
+                                     .arg(n);
+            readStatus(0, found);
         });
     });
     setBusy(true);
@@ -307,12 +308,35 @@ void AxesDock::scan() {
     m_line->open();
 }
 
+// Each axis's status after a scan, one axis at a time; the scan is finished when the last has answered.
+void AxesDock::readStatus(int row, const QString& found) {
+    if (row >= m_table->rowCount()) {
+        setBusy(false);
+        setStatus(found);
+        return emit scanFinished(m_table->rowCount());
+    }
+    const QString id = m_table->item(row, kId)->text();
+    setStatus(tr("Reading the status of axis %1...").arg(id));
+    auto* errand = new machine::AxisErrand(*m_line, family(), id, this);
+    m_errand = errand;
+    connect(errand, &machine::AxisErrand::finished, this, [this, errand, row, found](bool ok, const QString& why) {
+        errand->deleteLater();
+        m_errand = nullptr;
+        const QString text = ok ? machine::statusText(family(), errand->answers()) : tr("no status: %1").arg(why);
+        auto* item = new QTableWidgetItem(text);
+        item->setToolTip(text);
+        m_table->setItem(row, kStatus, item);
+        readStatus(row + 1, found);
+    });
+    errand->sendLines(machine::statusQueries(family()));
+}
+
 void AxesDock::showScan(const QList<machine::FoundAxis>& axes) {
     m_table->setRowCount(0);
     for (const machine::FoundAxis& a : axes) {
         const int row = m_table->rowCount();
         m_table->insertRow(row);
-        const QStringList cells{a.id, ConnectionChoice::familyName(a.family), a.answer, QString()};
+        const QStringList cells{a.id, ConnectionChoice::familyName(a.family), a.answer, QString(), QString()};
         for (int c = 0; c < kColumns; ++c) m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
     }
     if (!axes.isEmpty()) m_table->selectRow(0);
@@ -339,7 +363,7 @@ MachineProject AxesDock::scannedProject() const {
 
 void AxesDock::backUpTo(const QString& dir) {
     if (m_table->rowCount() == 0) return setStatus(tr("Scan the line first: a backup reads every axis the scan found."));
-    if (isBusy()) return;
+    if (isBusy()) return setStatus(tr("Wait for the scan or the job under way to finish (or cancel it)."));
     runJob(MachineJob::Kind::Backup, scannedProject(), dir);
     m_projectDir = dir;
 }
@@ -393,7 +417,8 @@ void AxesDock::cancel() {
 }
 
 void AxesDock::runJob(MachineJob::Kind kind, MachineProject project, const QString& dir) {
-    if (isBusy() || !ensureLine()) return;
+    if (isBusy()) return setStatus(tr("Wait for the scan or the job under way to finish (or cancel it)."));
+    if (!ensureLine()) return;
     emit lineNeeded(m_line);
     m_job = std::make_unique<MachineJob>(kind, *m_line, std::move(project), dir);
     connect(m_job.get(), &MachineJob::stageChanged, this, &AxesDock::setStatus);
@@ -439,7 +464,7 @@ void AxesDock::showAxisResult(const AxisReport& r) {
     }
     const int row = m_table->rowCount(); // an axis of the project the scan did not list
     m_table->insertRow(row);
-    const QStringList cells{r.id, ConnectionChoice::familyName(r.family), QString(), text};
+    const QStringList cells{r.id, ConnectionChoice::familyName(r.family), QString(), QString(), text};
     for (int c = 0; c < kColumns; ++c) m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
 }
 
@@ -450,6 +475,7 @@ void AxesDock::startErrand(const QString& id, const QStringList& lines, const QS
     m_errand = errand;
     connect(errand, &machine::AxisErrand::finished, this, [this, errand, id](bool ok, const QString& message) {
         errand->deleteLater();
+        m_errand = nullptr;
         setBusy(false);
         setStatus(message);
         if (m_compare) m_compare->drivesAnswer(id, ok, message);

@@ -1,7 +1,8 @@
 // AxesDock: View > Axes and the Machine menu (issue 21) — the multidrop line the machine's axes share (a
 // simulated line of N axes, or a serial port or device server), a scan of it (each axis's ID, family and
 // answer), and Use Axis, which points every tool of the IDE at the selected axis (the connection becomes that
-// axis on the line; the status bar and title name it). Back Up, Compare and Restore run a MachineJob over the
+// axis on the line; the status bar and title name it). After a scan each axis's status is read (enabled,
+// fault, program checksum or model: axis_status.h). Back Up, Compare and Restore run a MachineJob over the
 // line with a progress bar and a per-axis result in the table; Compare opens MachineCompareDialog. The line
 // is held open across axis switches (a simulated line keeps its drives); a job or a scan first asks the IDE to
 // leave the line (lineNeeded), as a real bus carries one conversation at a time.
@@ -78,6 +79,7 @@ private:
     void showLineKind();
     void runJob(machine::MachineJob::Kind kind, machine::MachineProject project, const QString& dir);
     void showScan(const QList<machine::FoundAxis>& axes);
+    void readStatus(int row, const QString& found);
     void showAxisResult(const machine::AxisReport& report);
     void setBusy(bool busy);
     void setStatus(const QString& text);

@@ -48,6 +48,7 @@ void AxisErrand::begin() {
             [this](quint64 id, const serialport::LineAnswer& a) {
                 if (id != m_pending) return;
                 if (!a.ok()) return finish(false, tr("axis %1 refused \"%2\": %3").arg(m_id, a.command, a.error));
+                m_answers << a.lines.join(QLatin1Char(' '));
                 nextLine();
             });
     connect(m_session.get(), &serialport::DriveSession::lost, this, [this](quint64 id, const QString& why) {

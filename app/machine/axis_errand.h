@@ -29,6 +29,8 @@ public:
     ~AxisErrand() override;
 
     void sendLines(const QStringList& lines); // each must be accepted
+    // What the drive printed for each line sent, in order (its lines joined by a blank).
+    const QStringList& answers() const { return m_answers; }
     void download(const QString& programText);
 
 signals:
@@ -45,6 +47,7 @@ private:
     QString m_id;
     QStringList m_lines;
     QString m_current; // the line in flight
+    QStringList m_answers;
     QString m_program;
     bool m_downloading = false;
     bool m_started = false;

@@ -92,6 +92,8 @@ private slots:
         QStringList found;
         for (int r = 0; r < 4; ++r) found << dock.table()->item(r, 0)->text();
         QCOMPARE(found.join(u','), ids);
+        for (int r = 0; r < 4; ++r) // each axis's status, read after the scan: powered up, not yet enabled
+            QVERIFY2(dock.table()->item(r, 3)->text().contains("disabled"), qPrintable(dock.table()->item(r, 3)->text()));
 
         QTemporaryDir tmp;
         const QString dir = tmp.filePath("backup");
@@ -131,7 +133,7 @@ private slots:
         for (const QString& line : change) QVERIFY(typeLine(window, line));
         QVERIFY2(runJob(dock, [&] { dock.restoreFrom(dir); }), qPrintable(dock.statusText()));
         for (int r = 0; r < 4; ++r)
-            QVERIFY2(dock.table()->item(r, 3)->text().startsWith("done"), qPrintable(dock.table()->item(r, 3)->text()));
+            QVERIFY2(dock.table()->item(r, 4)->text().startsWith("done"), qPrintable(dock.table()->item(r, 4)->text()));
         QVERIFY2(runJob(dock, [&] { dock.compareWith(dir); }), qPrintable(dock.statusText()));
         QCOMPARE(dock.compareDialog()->differenceCount(), 0);
 
