@@ -100,7 +100,7 @@ AxesDock::AxesDock(QWidget* parent) : QDockWidget(tr("Axes"), parent) {
     connect(m_backUpAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::backUpTo, false); });
     connect(m_compareAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::compareWith, true); });
     connect(m_restoreAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::restoreFrom, true); });
-    connect(m_compareBackupsAction, &QAction::triggered, this, &AxesDock::compareBackups);
+    connect(m_compareBackupsAction, &QAction::triggered, this, &AxesDock::chooseBackupsToCompare);
     connect(m_openAction, &QAction::triggered, this, [this] { chooseFolderAnd(&AxesDock::openProject, true); });
     connect(m_broadcastAction, &QAction::triggered, this, [this] {
         bool ok = false;
@@ -507,12 +507,15 @@ void AxesDock::chooseFolderAnd(void (AxesDock::*then)(const QString&), bool exis
 }
 
 // Two backups side by side, no drive: each axis of the first beside the same axis of the second.
-void AxesDock::compareBackups() {
+void AxesDock::chooseBackupsToCompare() {
     const QString start = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    const QString a = QFileDialog::getExistingDirectory(this, tr("First Backup"), start);
+    const QString a = QFileDialog::getExistingDirectory(this, tr("First Backup"), m_projectDir.isEmpty() ? start : m_projectDir);
     if (a.isEmpty()) return;
     const QString b = QFileDialog::getExistingDirectory(this, tr("Second Backup"), a);
-    if (b.isEmpty()) return;
+    if (!b.isEmpty()) compareBackups(a, b);
+}
+
+void AxesDock::compareBackups(const QString& a, const QString& b) {
     QString error;
     const auto left = machine::readMachineProject(a, error);
     const auto right = left ? machine::readMachineProject(b, error) : std::nullopt;

@@ -51,6 +51,8 @@ public:
     void backUpTo(const QString& dir);
     void compareWith(const QString& dir);
     void restoreFrom(const QString& dir);
+    // Two backups side by side, no drive: each axis of a beside the same axis of b ("Take Right" writes a's).
+    void compareBackups(const QString& a, const QString& b);
     // Every axis executes line and none answers (the BDS5's '\*'); refused, in the status, for a family
     // whose line has no broadcast.
     void broadcast(const QString& line);
@@ -88,7 +90,7 @@ private:
     std::optional<machine::MachineProject> projectOfThisLine(const QString& dir);
     void chooseFolderAnd(void (AxesDock::*then)(const QString&), bool existing);
     void startErrand(const QString& id, const QStringList& lines, const QString* program);
-    void compareBackups();
+    void chooseBackupsToCompare();
 
     QComboBox* m_familyBox;
     QComboBox* m_kindBox; // simulated line, or port

@@ -7,11 +7,13 @@
 #include "drive_connection.h"
 #include "family_workspace.h"
 #include "machine/axes_dock.h"
+#include "machine/axis_compare.h"
 
 #include "serialport/drive_session.h"
 #include "serialport/link.h"
 
 #include <QCheckBox>
+#include <QDir>
 #include <QFile>
 #include <QListWidget>
 #include <QPushButton>
@@ -136,6 +138,30 @@ private slots:
             QVERIFY2(dock.table()->item(r, 4)->text().startsWith("done"), qPrintable(dock.table()->item(r, 4)->text()));
         QVERIFY2(runJob(dock, [&] { dock.compareWith(dir); }), qPrintable(dock.statusText()));
         QCOMPARE(dock.compareDialog()->differenceCount(), 0);
+
+        // Two backups, no drive: a copy with one value changed shows that one row; Take Right writes it.
+        const QString copy = tmp.filePath("copy");
+        QVERIFY(QDir().mkpath(copy));
+        for (const QString& name : QDir(dir).entryList(QDir::Files)) QVERIFY(QFile::copy(dir + "/" + name, copy + "/" + name));
+        QString error;
+        const auto project = machine::readMachineProject(copy, error);
+        QVERIFY2(project, qPrintable(error));
+        const QString varFile = copy + "/" + project->axis(axis)->variablesFile;
+        QFile vars(varFile);
+        QVERIFY(vars.open(QIODevice::ReadOnly));
+        const QString text = QString::fromLatin1(vars.readAll());
+        vars.close();
+        const auto values = machine::namedValues(DriveFamily(family), text);
+        const auto it = std::find_if(values.begin(), values.end(), [&](const machine::NamedValue& v) { return v.name == variable; });
+        QVERIFY(it != values.end());
+        QVERIFY(vars.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        vars.write(machine::withValue(DriveFamily(family), text, variable, "7").toLatin1());
+        vars.close();
+        dock.compareBackups(dir, copy);
+        QCOMPARE(dock.compareDialog()->differenceCount(), 1);
+        QCOMPARE(dock.compareDialog()->table()->item(0, 0)->text(), variable);
+        QCOMPARE(dock.compareDialog()->table()->item(0, 2)->text(), QStringLiteral("7"));
+        QVERIFY(!dock.compareDialog()->takeFilesButton()->isVisible()); // no drive to send to
 
         // The backup's project sets the panel up again: its line and its axes.
         dock.setSimulatedLine(DriveFamily(family), axis);
