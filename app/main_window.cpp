@@ -181,6 +181,7 @@ FamilyWorkspace* MainWindow::workspace(drive_core::DriveFamily family) const {
 }
 
 void MainWindow::showFamily(drive_core::DriveFamily family) {
+    if (m_axesDock) m_axesDock->followFamily(family);
     const bool bds5 = family == drive_core::DriveFamily::Bds5;
     for (QAction* action : m_bds5Only) action->setVisible(bds5);
     // A toolbar whose actions are all hidden would stay as an empty strip: the BDS5's go with its actions.
@@ -267,6 +268,9 @@ void MainWindow::createMenus() {
     axesPanel->setText(tr("&Axes Panel"));
     axesPanel->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
     machine->addAction(axesPanel);
+    connect(axesPanel, &QAction::triggered, m_axesDock, [this](bool shown) {
+        if (shown) m_axesDock->raise(); // in front of the Outline it shares a tab with
+    });
     machine->addSeparator();
     for (QAction* a : m_axesDock->menuActions()) {
         machine->addAction(a);

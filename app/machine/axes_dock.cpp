@@ -183,6 +183,10 @@ DriveFamily AxesDock::family() const {
     return DriveFamily(m_familyBox->currentData().toInt());
 }
 
+void AxesDock::followFamily(DriveFamily f) {
+    if (!m_line && !isBusy()) m_familyBox->setCurrentIndex(m_familyBox->findData(int(f)));
+}
+
 void AxesDock::setSimulatedLine(DriveFamily f, const QString& ids) {
     m_familyBox->setCurrentIndex(m_familyBox->findData(int(f)));
     m_kindBox->setCurrentIndex(0);

@@ -39,6 +39,8 @@ public:
     // The line, as the form above the table sets it. ids: a simulated line's axes ("A,B,C,D").
     void setSimulatedLine(drive_core::DriveFamily family, const QString& ids);
     void setPortLine(drive_core::DriveFamily family, const QString& port, int baud);
+    // The IDE's family, which the line form takes until a line has been set up (a line in use stays).
+    void followFamily(drive_core::DriveFamily family);
     // A simulated line's speed (simulated seconds per wall second; 1, real time, unless a test asks).
     void setSimulatorSpeed(double factor) { m_speed = factor; }
 
