@@ -256,7 +256,7 @@ void AxesDock::setBusy(bool busy) {
 }
 
 void AxesDock::openProject(const QString& dir) {
-    if (isBusy()) return;
+    if (saidBusy()) return;
     QString error;
     const auto project = machine::readMachineProject(dir, error);
     if (!project) return setStatus(error);
@@ -276,8 +276,14 @@ void AxesDock::openProject(const QString& dir) {
                        project->backedUp.isEmpty() ? QString() : tr(", backed up %1").arg(project->backedUp)));
 }
 
+bool AxesDock::saidBusy() {
+    if (!isBusy()) return false;
+    setStatus(tr("Wait for the scan or the job under way to finish (or cancel it)."));
+    return true;
+}
+
 void AxesDock::scan() {
-    if (isBusy() || !ensureLine()) return;
+    if (saidBusy() || !ensureLine()) return;
     QString error;
     const QStringList ids = serialport::parseAxisIds(family(), m_callIds->text(), error);
     if (ids.isEmpty()) return setStatus(tr("Scan calls: %1").arg(error));
@@ -347,7 +353,7 @@ void AxesDock::showScan(const QList<machine::FoundAxis>& axes) {
 }
 
 void AxesDock::useAxis(const QString& id) {
-    if (isBusy()) return setStatus(tr("Wait for the %1 to finish.").arg(m_job ? tr("job") : tr("scan")));
+    if (saidBusy()) return;
     if (!ensureLine()) return;
     emit axisChosen(ConnectionChoice::onAxis(m_line, family(), id));
     setStatus(tr("Every tool now talks to axis %1 on %2.").arg(id, m_line->description()));
@@ -367,7 +373,7 @@ MachineProject AxesDock::scannedProject() const {
 
 void AxesDock::backUpTo(const QString& dir) {
     if (m_table->rowCount() == 0) return setStatus(tr("Scan the line first: a backup reads every axis the scan found."));
-    if (isBusy()) return setStatus(tr("Wait for the scan or the job under way to finish (or cancel it)."));
+    if (saidBusy()) return;
     runJob(MachineJob::Kind::Backup, scannedProject(), dir);
     m_projectDir = dir;
 }
@@ -397,7 +403,7 @@ std::optional<MachineProject> AxesDock::projectOfThisLine(const QString& dir) {
 }
 
 void AxesDock::broadcast(const QString& line) {
-    if (isBusy() || !ensureLine()) return;
+    if (saidBusy() || !ensureLine()) return;
     const QByteArray bytes = serialport::axisBroadcastBytes(family(), line);
     if (bytes.isEmpty())
         return setStatus(tr("The %1's line has no broadcast: send to each axis in turn.").arg(ConnectionChoice::familyName(family())));
@@ -421,8 +427,7 @@ void AxesDock::cancel() {
 }
 
 void AxesDock::runJob(MachineJob::Kind kind, MachineProject project, const QString& dir) {
-    if (isBusy()) return setStatus(tr("Wait for the scan or the job under way to finish (or cancel it)."));
-    if (!ensureLine()) return;
+    if (saidBusy() || !ensureLine()) return;
     emit lineNeeded(m_line);
     m_job = std::make_unique<MachineJob>(kind, *m_line, std::move(project), dir);
     connect(m_job.get(), &MachineJob::stageChanged, this, &AxesDock::setStatus);
@@ -473,7 +478,10 @@ void AxesDock::showAxisResult(const AxisReport& r) {
 }
 
 void AxesDock::startErrand(const QString& id, const QStringList& lines, const QString* program) {
-    if (isBusy() || !ensureLine()) return;
+    if (saidBusy() || !ensureLine()) {
+        if (m_compare) m_compare->drivesAnswer(id, false, statusText()); // the dialog says why nothing went
+        return;
+    }
     emit lineNeeded(m_line);
     auto* errand = new machine::AxisErrand(*m_line, family(), id, this);
     m_errand = errand;

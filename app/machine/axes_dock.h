@@ -86,6 +86,7 @@ private:
     void readStatus(int row, const QString& found);
     void showAxisResult(const machine::AxisReport& report);
     void setBusy(bool busy);
+    bool saidBusy(); // true, with the status saying so, while a scan, a job or an errand runs
     void setStatus(const QString& text);
     machine::MachineProject scannedProject() const;
     // dir's project when it is of the line's family; nullopt, with the status saying why, when not.
