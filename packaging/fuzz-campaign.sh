@@ -7,7 +7,9 @@
 #   packaging/fuzz-campaign.sh TARGET EXECUTIONS     e.g. fuzz-campaign.sh capture_files_fuzz 10000000
 #   packaging/fuzz-campaign.sh --totals              the ledger's sums
 # Exit status 0 when the run ended without a finding; 1 with a finding (the reproducer is in
-# build-fuzz/<name>-artifacts/, the row says FINDING); 2 on bad arguments.
+# build-fuzz/<name>-artifacts/, the row says FINDING); 2 on bad arguments. A run stopped early (SIGINT to
+# the fuzzer, e.g. `pkill -INT -f build-fuzz/.*/NAME` to free the machine for CI) is no finding: its row
+# counts the executions it did and says where it stopped, and what it found is merged as usual.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -46,10 +48,12 @@ more=()
 [ "$seeds" != - ] && more=("$root/$seeds")
 found=0
 # shellcheck disable=SC2086
+stopped=0
 "$build/$dir/$name" "$work" "$root/$corpus" "${more[@]}" $flags -seed=0 -runs="$executions" -timeout=10 \
-    -rss_limit_mb=2048 -artifact_prefix="$artifacts" -print_final_stats=1 >"$log" 2>&1 || found=1
-done_runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
-seed=$(grep -m1 -o 'Seed: [0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+    -rss_limit_mb=2048 -artifact_prefix="$artifacts" -print_final_stats=1 -interrupt_exit_code=72 \
+    >"$log" 2>&1 || { [ $? = 72 ] && grep -aq 'run interrupted' "$log" && stopped=1; } || found=1
+done_runs=$(grep -a -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
+seed=$(grep -a -m1 -o 'Seed: [0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
 kept=0
 if [ "$found" = 0 ]; then
     before=$(find "$root/$corpus" -type f | wc -l)
@@ -64,6 +68,7 @@ fi
     '| date | commit | target | executions | result | seed | kept |' \
     '| --- | --- | --- | --- | --- | --- | --- |' >"$ledger"
 result=$([ "$found" = 0 ] && echo "no finding" || echo "FINDING (see $name-artifacts)")
+[ "$stopped" = 1 ] && result="no finding (stopped at $done_runs of $executions)"
 printf '| %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$commit" "$name" "$done_runs" "$result" "$seed" \
     "$kept" >>"$ledger"
 echo "fuzz-campaign: $name: $done_runs executions, $result; $kept inputs merged into $corpus"
