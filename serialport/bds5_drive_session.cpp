@@ -13,6 +13,7 @@ Bds5DriveSession::Bds5DriveSession(Link& link, QObject* parent) : DriveSession(p
         LineAnswer a;
         a.command = r.command;
         a.lines = r.lines;
+        a.garbled = r.garbled;
         if (!r.errors.isEmpty()) {
             const Bds5ErrorLine& e = r.errors.first();
             a.errorCode = e.code;
@@ -29,6 +30,10 @@ Bds5DriveSession::Bds5DriveSession(Link& link, QObject* parent) : DriveSession(p
 
 quint64 Bds5DriveSession::sendLine(const QString& line) {
     return m_session.send(line);
+}
+
+quint64 Bds5DriveSession::sendQuiet(const QString& line) {
+    return m_session.send(line, Bds5Session::Echo::Quiet);
 }
 
 TransferResult Bds5DriveSession::toResult(const Bds5TransferResult& r, int linesSent) {

@@ -18,6 +18,7 @@ public:
     drive_core::DriveFamily family() const override { return drive_core::DriveFamily::Bds5; }
     bool isReady() const override { return m_session.state() == Bds5Session::State::Ready; }
     quint64 sendLine(const QString& line) override;
+    quint64 sendQuiet(const QString& line) override;
     void download(const QString& programText) override;
     void upload() override;
     void cancelTransfer() override;

@@ -26,6 +26,7 @@ struct LineAnswer {
     QStringList lines; // what the drive printed, without line ends or the prompt
     int errorCode = 0; // the drive's own code (BDS5 ERR nn, SC750 !nn, PMC-960 #xx), 0 if accepted
     QString error;     // the drive's own words for it ("ERR 92 ZERO DIVIDE", "#B6 ..."), "" if accepted
+    bool garbled = false; // the answer came back damaged on the wire (BDS5: no echo): its words may be wrong
     bool ok() const { return error.isEmpty(); }
 };
 
@@ -62,6 +63,9 @@ public:
     // (which has no command line) "NAME" to read a variable, "NAME=VALUE" to write one, or a real-time
     // function ("GO.VEL"). answered() or lost() follows with the id returned.
     virtual quint64 sendLine(const QString& line) = 0;
+    // The same, for a poll the user did not type (a watch, a browser's read): kept out of the terminal where
+    // the family echoes what is sent there (the BDS5's quiet P); elsewhere the same as sendLine.
+    virtual quint64 sendQuiet(const QString& line) { return sendLine(line); }
     // The program text, verified on the drive; transferFinished() follows once. SC750: compiled to its
     // .BIN first (a compile error fails the download with its line), and the source stored beside it.
     virtual void download(const QString& programText) = 0;

@@ -35,7 +35,7 @@ void WatchPoller::poll(const QStringList& names) {
     m_names = names;
     m_values.clear();
     if (m_session.family() == drive_core::DriveFamily::Bds5) {
-        m_pending = m_session.sendLine(QStringLiteral("P ") + names.join(QLatin1Char(' ')));
+        m_pending = m_session.sendQuiet(QStringLiteral("P ") + names.join(QLatin1Char(' ')));
         return;
     }
     pollNext();
@@ -55,7 +55,7 @@ void WatchPoller::pollNext() {
     if (auto* pmc960 = dynamic_cast<Pmc960DriveSession*>(&m_session))
         m_pending = pmc960->pmc960().poll(pollLetter(name));
     else
-        m_pending = m_session.sendLine(name); // SC750: a G frame
+        m_pending = m_session.sendQuiet(name); // SC750: a G frame
 }
 
 void WatchPoller::onAnswered(quint64 id, const LineAnswer& answer) {
@@ -66,7 +66,7 @@ void WatchPoller::onAnswered(quint64 id, const LineAnswer& answer) {
         // P prints the values on one line, blank-separated.
         const QStringList words = answer.lines.join(QLatin1Char(' ')).split(QLatin1Char(' '), Qt::SkipEmptyParts);
         QList<double> values;
-        for (int i = 0; i < m_names.size() && words.size() >= m_names.size(); ++i) {
+        for (int i = 0; i < m_names.size() && words.size() >= m_names.size() && !answer.garbled; ++i) {
             const std::optional<double> v = number(words[i]);
             if (!v) return emit answered({}); // a damaged line: no sample this time
             values.append(*v);

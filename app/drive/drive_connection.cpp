@@ -23,7 +23,8 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
     m_choice = choice;
     m_reportedNotConnected = false;
     m_link = choice.makeLink();
-    m_session = std::make_unique<serialport::Bds5Session>(*m_link);
+    m_session = std::make_unique<serialport::Bds5DriveSession>(*m_link);
+    serialport::Bds5Session* session = &m_session->bds5();
     serialport::Link* link = m_link.get();
     // Said closed before the reconnector says lost; the reconnector stops before opened is said.
     connect(link, &serialport::Link::closed, this, [this] { emit connectedChanged(false); });
@@ -32,12 +33,11 @@ void DriveConnection::connectTo(const ConnectionChoice& choice) {
     connect(link, &serialport::Link::errorOccurred, this, [this](const QString& message) {
         if (!isReconnecting()) emit errorOccurred(message); // not once a second while it is away
     });
-    connect(m_session.get(), &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
-    connect(m_session.get(), &serialport::Bds5Session::shownReceived, this, &DriveConnection::shownReceived);
-    connect(m_session.get(), &serialport::Bds5Session::rawSent, this, &DriveConnection::rawSent);
-    connect(m_session.get(), &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
-    connect(m_session.get(), &serialport::Bds5Session::stateChanged, this,
-            &DriveConnection::sessionStateChanged);
+    connect(session, &serialport::Bds5Session::rawReceived, this, &DriveConnection::rawReceived);
+    connect(session, &serialport::Bds5Session::shownReceived, this, &DriveConnection::shownReceived);
+    connect(session, &serialport::Bds5Session::rawSent, this, &DriveConnection::rawSent);
+    connect(session, &serialport::Bds5Session::modeChanged, this, &DriveConnection::modeChanged);
+    connect(session, &serialport::Bds5Session::stateChanged, this, &DriveConnection::sessionStateChanged);
     emit linkChanged();
     link->open();
 }
@@ -52,17 +52,17 @@ QString DriveConnection::linkDescription() const {
 
 void DriveConnection::sendRaw(const QByteArray& bytes) {
     if (!checkConnected()) return;
-    m_session->sendRaw(bytes);
+    m_session->bds5().sendRaw(bytes);
 }
 
 void DriveConnection::sendUrgent(const QByteArray& bytes) {
     if (!checkConnected()) return;
-    m_session->sendUrgent(bytes);
+    m_session->bds5().sendUrgent(bytes);
 }
 
 quint64 DriveConnection::sendCommand(const QString& line) {
     if (!checkConnected()) return 0;
-    return m_session->send(line);
+    return m_session->bds5().send(line);
 }
 
 bool DriveConnection::checkConnected() {

@@ -1,4 +1,6 @@
-// DriveConnection: the one live connection to a drive — a Link and the Bds5Session that speaks over it.
+// DriveConnection: the one live connection to a BDS5 — a Link and the Bds5DriveSession that speaks over it:
+// the family-neutral DriveSession the generic tools use, with its Bds5Session inside for what only the BDS5
+// has (quiet polls, RECORD/PLAY, the terminal's modes).
 // Replacing the connection tears the old one down first. Re-emits what the views need as plain signals,
 // so views never hold a pointer to a link or session that may be replaced. GUI thread only.
 #pragma once
@@ -6,7 +8,7 @@
 #include "connection_choice.h"
 #include "link_reconnector.h"
 
-#include "serialport/bds5_session.h"
+#include "serialport/bds5_drive_session.h"
 #include "serialport/link.h"
 
 #include <QObject>
@@ -33,7 +35,9 @@ public:
     bool hasLink() const { return m_link != nullptr; }
     ConnectionChoice choice() const { return m_choice; }
     QString linkDescription() const;
-    serialport::Bds5Session* session() const { return m_session.get(); }
+    serialport::Bds5Session* session() const { return m_session ? &m_session->bds5() : nullptr; }
+    // The same session behind the contract every family meets (serialport/drive_session.h).
+    serialport::DriveSession* driveSession() const { return m_session.get(); }
 
     // Bytes typed by the user, passed to the drive untouched. Dropped (with errorOccurred) when closed.
     void sendRaw(const QByteArray& bytes);
@@ -59,7 +63,7 @@ private:
     ConnectionChoice m_choice;
     // Declared link first: the session refers to the link, so it must be destroyed before it.
     std::unique_ptr<serialport::Link> m_link;
-    std::unique_ptr<serialport::Bds5Session> m_session;
+    std::unique_ptr<serialport::Bds5DriveSession> m_session;
     bool m_reportedNotConnected = false; // say "not connected" once, not on every key press
     LinkReconnector m_reconnector;       // reopens the link when it closes by itself
 };

@@ -130,7 +130,7 @@ SpectrumView* ScopeController::spectrum() {
 }
 
 WatchView* ScopeController::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(new Bds5WatchSource(m_window.connection()), &m_window);
+    if (!m_watch) m_watch = new WatchView(makeBds5WatchSource(m_window.connection()), &m_window);
     m_watch->show();
     m_watch->raise();
     return m_watch;

@@ -9,35 +9,39 @@
 
 namespace app {
 
+SessionWatchSource::SessionWatchSource(Host host, QObject* parent) : WatchSource(parent), m_host(std::move(host)) {}
+
 SessionWatchSource::SessionWatchSource(FamilyWorkspace& workspace, QObject* parent)
-    : WatchSource(parent), m_workspace(workspace) {}
+    : SessionWatchSource(Host{workspace.family(), [&workspace] { return workspace.driveSession(); },
+                              [&workspace] { return workspace.busyReason(); }, tr("the controller is not connected")},
+                         parent) {}
 
 SessionWatchSource::~SessionWatchSource() {
     delete m_poller;
 }
 
 QString SessionWatchSource::familyName() const {
-    return ConnectionChoice::familyName(m_workspace.family());
+    return ConnectionChoice::familyName(m_host.family);
 }
 
 QList<WatchSource::Choice> SessionWatchSource::choices() const {
     QList<Choice> list;
-    for (const serialport::WatchChoice& c : serialport::watchChoices(m_workspace.family()))
+    for (const serialport::WatchChoice& c : serialport::watchChoices(m_host.family))
         list.append({c.name, c.label, c.unit});
     return list;
 }
 
 QString SessionWatchSource::method() const {
-    return serialport::watchMethod(m_workspace.family());
+    return serialport::watchMethod(m_host.family);
 }
 
 QString SessionWatchSource::notReady() const {
-    if (!m_workspace.driveSession()) return tr("the controller is not connected");
-    return m_workspace.busyReason();
+    if (!m_host.session()) return m_host.notConnected;
+    return m_host.busyReason();
 }
 
 serialport::WatchPoller* SessionWatchSource::poller() {
-    serialport::DriveSession* session = m_workspace.driveSession();
+    serialport::DriveSession* session = m_host.session();
     if (session != m_session || !m_poller) {
         delete m_poller; // its session is gone (a reconnection) or another one took its place
         m_poller = nullptr;
@@ -52,7 +56,7 @@ serialport::WatchPoller* SessionWatchSource::poller() {
 
 void SessionWatchSource::poll(const QStringList& names) {
     serialport::WatchPoller* p = poller();
-    if (!p) return emit failed(tr("the controller is not connected"), false);
+    if (!p) return emit failed(m_host.notConnected, false);
     p->poll(names);
 }
 
@@ -61,7 +65,7 @@ void SessionWatchSource::cancel() {
 }
 
 int SessionWatchSource::minimumIntervalMs() const {
-    return serialport::WatchPoller::minimumIntervalMs(m_workspace.family());
+    return serialport::WatchPoller::minimumIntervalMs(m_host.family);
 }
 
 } // namespace app

@@ -1,13 +1,18 @@
 // SessionWatchSource: the polled chart's values from any family's DriveSession, through the one
 // serialport::WatchPoller the CLI's watch uses too — the names and units are the family's watch choices
-// (watch_choices.h), one sample is one poll in the family's way (SC750 a G frame per variable, PMC-960 its
-// out-of-band status polls). The workspace says when the link may take no poll (a transfer under way).
-// The BDS5's P polls stay quiet in the terminal through Bds5WatchSource. GUI thread only.
+// (watch_choices.h), one sample is one poll in the family's way (BDS5 one quiet P for all the names, SC750 a
+// G frame per variable, PMC-960 its out-of-band status polls). Its host (a family's workspace, or the main
+// window for the BDS5) gives the session of the moment and says when the link may take no poll (a transfer
+// under way, a BDS5 program running). GUI thread only.
 #pragma once
 
 #include "watch_source.h"
 
+#include "drive_core/drive.h"
+
 #include <QPointer>
+
+#include <functional>
 
 namespace serialport {
 class DriveSession;
@@ -21,6 +26,14 @@ class FamilyWorkspace;
 class SessionWatchSource final : public WatchSource {
     Q_OBJECT
 public:
+    struct Host {
+        drive_core::DriveFamily family = drive_core::DriveFamily::Bds5;
+        std::function<serialport::DriveSession*()> session; // nullptr while not connected
+        std::function<QString()> busyReason;                // why no poll may go now; "" when one may
+        QString notConnected;                               // what notReady() says without a session
+    };
+
+    explicit SessionWatchSource(Host host, QObject* parent = nullptr);
     explicit SessionWatchSource(FamilyWorkspace& workspace, QObject* parent = nullptr);
     ~SessionWatchSource() override;
 
@@ -35,7 +48,7 @@ public:
 private:
     serialport::WatchPoller* poller();
 
-    FamilyWorkspace& m_workspace;
+    Host m_host;
     QPointer<serialport::DriveSession> m_session; // the session m_poller reads through
     serialport::WatchPoller* m_poller = nullptr;  // rebuilt when the workspace connects anew
 };

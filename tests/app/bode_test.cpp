@@ -106,9 +106,15 @@ private slots:
         QVERIFY(w.enabled());
         w.window.connection().sendCommand(QStringLiteral("J 100"));
         app::WatchView* watch = w.window.scopeController().watchVariables();
+        QSignalSpy shown(&w.window.connection(), &app::DriveConnection::shownReceived);
         watch->watch({QStringLiteral("PFB")});
         const app::VariableWatcher& watcher = watch->watcher();
         QTRY_VERIFY_WITH_TIMEOUT(watcher.store().channel(0).samples.size() >= 6, kDriveTimeoutMs);
+        // The polls are quiet: what the terminal shows holds none of them (the generic watch over the
+        // BDS5's DriveSession sends them as the old BDS5-only source did).
+        QByteArray terminal;
+        for (const QList<QVariant>& s : shown) terminal += s.at(0).toByteArray();
+        QVERIFY2(!terminal.contains("P PFB"), terminal.constData());
         const auto& samples = watcher.store().channel(0).samples;
         QVERIFY2(samples.back().value > samples.front().value,
                  qPrintable(QStringLiteral("%1 -> %2").arg(samples.front().value).arg(samples.back().value)));
