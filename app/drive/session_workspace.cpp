@@ -35,7 +35,7 @@ void SessionWorkspace::releaseLink() {
 }
 
 WatchView* SessionWorkspace::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(*this), &m_window);
+    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(SessionHost::of(*this)), &m_window);
     m_watch->show();
     m_watch->raise();
     return m_watch;

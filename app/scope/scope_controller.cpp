@@ -17,7 +17,7 @@
 #include "transfer_reporter.h"
 #include "tuning_panel.h"
 #include "terminal_tabs.h"
-#include "families/bds5/bds5_watch_source.h"
+#include "session_watch_source.h"
 #include "watch_view.h"
 
 #include "scope/capture_csv.h"
@@ -130,7 +130,7 @@ SpectrumView* ScopeController::spectrum() {
 }
 
 WatchView* ScopeController::watchVariables() {
-    if (!m_watch) m_watch = new WatchView(makeBds5WatchSource(m_window.connection()), &m_window);
+    if (!m_watch) m_watch = new WatchView(new SessionWatchSource(SessionHost::of(m_window.connection())), &m_window);
     m_watch->show();
     m_watch->raise();
     return m_watch;

@@ -2,19 +2,14 @@
 #include "session_watch_source.h"
 
 #include "connection_choice.h"
-#include "family_workspace.h"
 
 #include "serialport/watch_choices.h"
 #include "serialport/watch_poller.h"
 
 namespace app {
 
-SessionWatchSource::SessionWatchSource(Host host, QObject* parent) : WatchSource(parent), m_host(std::move(host)) {}
-
-SessionWatchSource::SessionWatchSource(FamilyWorkspace& workspace, QObject* parent)
-    : SessionWatchSource(Host{workspace.family(), [&workspace] { return workspace.driveSession(); },
-                              [&workspace] { return workspace.busyReason(); }, tr("the controller is not connected")},
-                         parent) {}
+SessionWatchSource::SessionWatchSource(SessionHost host, QObject* parent)
+    : WatchSource(parent), m_host(std::move(host)) {}
 
 SessionWatchSource::~SessionWatchSource() {
     delete m_poller;

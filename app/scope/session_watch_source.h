@@ -6,13 +6,10 @@
 // under way, a BDS5 program running). GUI thread only.
 #pragma once
 
+#include "session_host.h"
 #include "watch_source.h"
 
-#include "drive_core/drive.h"
-
 #include <QPointer>
-
-#include <functional>
 
 namespace serialport {
 class DriveSession;
@@ -21,20 +18,10 @@ class WatchPoller;
 
 namespace app {
 
-class FamilyWorkspace;
-
 class SessionWatchSource final : public WatchSource {
     Q_OBJECT
 public:
-    struct Host {
-        drive_core::DriveFamily family = drive_core::DriveFamily::Bds5;
-        std::function<serialport::DriveSession*()> session; // nullptr while not connected
-        std::function<QString()> busyReason;                // why no poll may go now; "" when one may
-        QString notConnected;                               // what notReady() says without a session
-    };
-
-    explicit SessionWatchSource(Host host, QObject* parent = nullptr);
-    explicit SessionWatchSource(FamilyWorkspace& workspace, QObject* parent = nullptr);
+    explicit SessionWatchSource(SessionHost host, QObject* parent = nullptr);
     ~SessionWatchSource() override;
 
     QString familyName() const override;
@@ -48,7 +35,7 @@ public:
 private:
     serialport::WatchPoller* poller();
 
-    Host m_host;
+    SessionHost m_host;
     QPointer<serialport::DriveSession> m_session; // the session m_poller reads through
     serialport::WatchPoller* m_poller = nullptr;  // rebuilt when the workspace connects anew
 };

@@ -11,6 +11,7 @@
 #include "io/io_panel.h"
 #include "serialport/simulator_link.h"
 #include "variables/variable_model.h"
+#include "variables/variable_browser.h"
 #include "variables/variables_dock.h"
 #include "families/bds5/wizard/parameter_page.h"
 #include "families/bds5/wizard/setup_wizard.h"
@@ -88,13 +89,13 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
                          [&window, variables] {
                              send(window, {"X1=1234", "X2=-50", "X3=7"});
                              floatDock(variables, {1000, 640});
-                             variables->model().setPinned(QStringLiteral("X1"), true);
-                             variables->model().setPinned(QStringLiteral("VMAX"), true);
-                             variables->reveal(QStringLiteral("PFB"));
+                             variables->browser()->model().setPinned(QStringLiteral("X1"), true);
+                             variables->browser()->model().setPinned(QStringLiteral("VMAX"), true);
+                             variables->browser()->reveal(QStringLiteral("PFB"));
                          },
                      .ready =
                          [variables] {
-                             const VariableModel& m = variables->model();
+                             const VariableModel& m = variables->browser()->model();
                              return !m.value(QStringLiteral("PFB")).isEmpty() &&
                                     !m.value(QStringLiteral("VCMD")).isEmpty() &&
                                     !m.value(QStringLiteral("ACC")).isEmpty() &&

@@ -7,7 +7,7 @@
 
 namespace app {
 
-namespace cat = drive_core::catalog::bds5;
+namespace cat = drive_core::catalog;
 
 namespace {
 constexpr quintptr kGroupId = 0; // internalId of a group row; a variable's is its group + 1
@@ -16,50 +16,32 @@ QString text(std::string_view view) {
     return QString::fromLatin1(view.data(), qsizetype(view.size()));
 }
 
-QString groupTitle(cat::VariableGroup group) {
-    switch (group) {
-    case cat::VariableGroup::Position: return VariableModel::tr("Position");
-    case cat::VariableGroup::Velocity: return VariableModel::tr("Velocity");
-    case cat::VariableGroup::Current: return VariableModel::tr("Current");
-    case cat::VariableGroup::LoopGains: return VariableModel::tr("Loop gains");
-    case cat::VariableGroup::Limits: return VariableModel::tr("Limits");
-    case cat::VariableGroup::Units: return VariableModel::tr("Units");
-    case cat::VariableGroup::Io: return VariableModel::tr("I/O");
-    case cat::VariableGroup::Switches: return VariableModel::tr("Switches");
-    case cat::VariableGroup::Communication: return VariableModel::tr("Communication");
-    case cat::VariableGroup::Timers: return VariableModel::tr("Timers");
-    case cat::VariableGroup::Record: return VariableModel::tr("Record");
-    case cat::VariableGroup::User: return VariableModel::tr("User (X, XS)");
-    case cat::VariableGroup::Internal: break;
-    }
-    return {};
-}
-
-QString conditionText(cat::WriteCondition condition) {
-    switch (condition) {
-    case cat::WriteCondition::Always: return VariableModel::tr("any time");
-    case cat::WriteCondition::Disabled: return VariableModel::tr("drive disabled");
-    case cat::WriteCondition::NoMotion: return VariableModel::tr("no motion");
-    case cat::WriteCondition::Never: return VariableModel::tr("read only");
-    case cat::WriteCondition::Factory: return VariableModel::tr("factory");
+QString conditionText(cat::Writable writable) {
+    switch (writable) {
+    case cat::Writable::Always: return VariableModel::tr("any time");
+    case cat::Writable::WhenDisabled: return VariableModel::tr("drive disabled");
+    case cat::Writable::WhenStopped: return VariableModel::tr("no motion");
+    case cat::Writable::Never: return VariableModel::tr("read only");
+    case cat::Writable::Factory: return VariableModel::tr("factory");
     }
     return {};
 }
 } // namespace
 
-VariableModel::VariableModel(QObject* parent) : QAbstractItemModel(parent) {
-    constexpr cat::VariableGroup kOrder[] = {
-        cat::VariableGroup::Position,  cat::VariableGroup::Velocity, cat::VariableGroup::Current,
-        cat::VariableGroup::LoopGains, cat::VariableGroup::Limits,   cat::VariableGroup::Units,
-        cat::VariableGroup::Io,        cat::VariableGroup::Switches, cat::VariableGroup::Communication,
-        cat::VariableGroup::Timers,    cat::VariableGroup::Record,   cat::VariableGroup::User};
-    for (const cat::VariableGroup group : kOrder) {
-        Group g{groupTitle(group), {}};
-        for (const cat::VariableInfo& info : cat::variables()) {
-            if (info.group != group) continue;
+VariableModel::VariableModel(drive_core::DriveFamily family, QObject* parent)
+    : QAbstractItemModel(parent), m_rules(VariableRules::make(family)) {
+    const auto all = cat::parameters(family);
+    QStringList order = m_rules->groupOrder();
+    const bool every = order.isEmpty();
+    if (every)
+        for (const cat::Parameter& p : all)
+            if (const QString g = m_rules->groupOf(p); !order.contains(g)) order << g;
+    for (const QString& title : order) {
+        Group g{title, {}};
+        for (const cat::Parameter& info : all) {
+            if (m_rules->groupOf(info) != title) continue;
             const QString stem = text(info.name);
-            const int first = info.firstIndex, last = info.lastIndex;
-            for (int i = first; i <= last; ++i) {
+            for (int i = info.firstIndex; i <= info.lastIndex; ++i) {
                 Row row{i == 0 ? stem : stem + QString::number(i), &info};
                 m_byName.insert(row.name, int(m_rows.size()));
                 g.rows.push_back(int(m_rows.size()));
@@ -71,6 +53,8 @@ VariableModel::VariableModel(QObject* parent) : QAbstractItemModel(parent) {
         if (!g.rows.empty()) m_groups.push_back(std::move(g));
     }
 }
+
+VariableModel::~VariableModel() = default;
 
 QModelIndex VariableModel::index(int row, int column, const QModelIndex& parent) const {
     if (column < 0 || column >= ColumnCount || row < 0) return {};
@@ -130,7 +114,9 @@ QVariant VariableModel::rowData(const Row& row, int column, int role) const {
     case NameRole: return row.name;
     case PinnedRole: return row.pinned ? QStringLiteral("pinned") : QString();
     case ChangedRole: return row.changed;
-    case Qt::ToolTipRole: return text(row.info->description) + QStringLiteral(" (%1)").arg(text(row.info->manualLines));
+    case Qt::ToolTipRole:
+        return text(row.info->description) + QStringLiteral(" (%1)").arg(text(row.info->manualLines)) +
+               (row.info->chosen ? tr("; range chosen: the manual gives none") : QString());
     case Qt::BackgroundRole:
         return row.changed && column == Value ? QVariant(QBrush(QColor(0xff, 0xe0, 0x82))) : QVariant();
     case Qt::ForegroundRole:
@@ -153,9 +139,9 @@ QVariant VariableModel::rowData(const Row& row, int column, int role) const {
         switch (column) {
         case Name: return row.pinned ? QStringLiteral("\u2605 ") + row.name : row.name;
         case Value: return displayValue(row);
-        case Unit: return text(row.info->units);
-        case Limits: return limitsText(row);
-        case Condition: return conditionText(row.info->write);
+        case Unit: return text(row.info->unit);
+        case Limits: return m_rules->limitsText(row.name, *row.info, validationContext());
+        case Condition: return conditionText(row.info->writable);
         case Description: return text(row.info->description);
         default: return {};
         }
@@ -165,33 +151,15 @@ QVariant VariableModel::rowData(const Row& row, int column, int role) const {
 
 QString VariableModel::displayValue(const Row& row) const {
     if (!row.readable) return tr("(not readable)");
-    if (row.value.isEmpty()) return QString();
-    if (row.info->isSwitch) return row.value == QLatin1String("0") ? QStringLiteral("OFF") : QStringLiteral("ON");
-    return row.value;
-}
-
-QString VariableModel::limitsText(const Row& row) const {
-    const cat::VariableInfo& info = *row.info;
-    if (info.limits == cat::LimitClass::None) return QStringLiteral("\u2014");
-    if (info.limits == cat::LimitClass::Switch) return QStringLiteral("OFF/ON");
-    if (const auto user = VariableValidator::userLimits(info, validationContext())) {
-        // Whole 32-bit ranges say little as numbers: name them.
-        if (info.limits == cat::LimitClass::Long) return tr("any (32-bit)");
-        if (info.limits == cat::LimitClass::LongPositive && info.unitClass == cat::UnitClass::None)
-            return tr("\u2265 0 (32-bit)");
-        return QStringLiteral("%1 \u2026 %2")
-            .arg(QString::number(user->first, 'g', 7), QString::number(user->second, 'g', 7));
-    }
-    if (info.limits == cat::LimitClass::Long) return tr("any (32-bit)");
-    return tr("%1 \u2026 %2 (basic units)").arg(cat::minimumOf(info)).arg(cat::maximumOf(info));
+    return m_rules->displayValue(*row.info, row.value);
 }
 
 bool VariableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
     if (role != Qt::EditRole || index.column() != Value || !(flags(index) & Qt::ItemIsEditable)) return false;
     const QString name = data(index, NameRole).toString();
-    const VariableValidator::Verdict verdict = VariableValidator::check(name, value.toString(), validationContext());
+    const VariableRules::Verdict verdict = m_rules->check(name, value.toString(), validationContext());
     if (verdict.ok)
-        emit editRequested(name, verdict.instruction);
+        emit editRequested(name, verdict.lines);
     else
         emit editRefused(name, verdict.message);
     return false; // the value shown changes when the drive is read back
@@ -202,8 +170,7 @@ Qt::ItemFlags VariableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
     if (index.internalId() == kGroupId || index.column() != Value) return f;
     const Row& row = m_rows[std::size_t(m_groups[std::size_t(index.internalId() - 1)].rows[std::size_t(index.row())])];
-    const bool writable =
-        row.info->write != cat::WriteCondition::Never && row.info->write != cat::WriteCondition::Factory;
+    const bool writable = row.info->writable != cat::Writable::Never && row.info->writable != cat::Writable::Factory;
     return writable ? f | Qt::ItemIsEditable : f;
 }
 
@@ -235,7 +202,7 @@ void VariableModel::setValue(const QString& name, const QString& printed) {
     row.value = printed;
     row.readable = true;
     rowChanged(*it);
-    if (row.info->group == cat::VariableGroup::Units) { // the limits of other variables are in these units
+    if (m_rules->scalesLimits(row.name)) { // the limits of other variables are in these units
         for (int g = 0; g < rowCount(); ++g) {
             const QModelIndex group = index(g, 0);
             emit dataChanged(index(0, Limits, group), index(rowCount(group) - 1, Limits, group));
@@ -307,7 +274,7 @@ QString VariableModel::varLines(const QStringList& names) const {
     return out;
 }
 
-VariableValidator::Context VariableModel::validationContext() const {
+VariableRules::Context VariableModel::validationContext() const {
     return {[this](const QString& name) { return number(name); }};
 }
 

@@ -1,15 +1,17 @@
-// VariableModel: every variable of the BDS5 catalog as a two-level tree (group -> variable) with the last
-// value read from the drive, unit, limits, programming condition and description. Widget-free: views,
-// the poller and tests share it. An edit of the Value column is validated and handed on as editRequested();
-// the model's value changes only when the drive is read again. GUI thread.
+// VariableModel: every parameter of a family's catalog (the common schema, drive_core/catalog/drive_catalog.h)
+// as a two-level tree (group -> variable) with the last value read from the drive, unit, limits, when it
+// is writable and description; the family's VariableRules group it, read its limits and check edits.
+// Widget-free: views, the poller and tests share it. An edit of the Value column is checked and handed on
+// as editRequested(); the model's value changes only when the drive is read again. GUI thread.
 #pragma once
 
-#include "variable_validator.h"
+#include "variable_rules.h"
 
 #include <QAbstractItemModel>
 #include <QHash>
 #include <QStringList>
 
+#include <memory>
 #include <vector>
 
 namespace app {
@@ -20,7 +22,10 @@ public:
     enum Column { Name, Value, Unit, Limits, Condition, Description, ColumnCount };
     enum Role { NameRole = Qt::UserRole + 1, PinnedRole, ChangedRole };
 
-    explicit VariableModel(QObject* parent = nullptr);
+    explicit VariableModel(drive_core::DriveFamily family = drive_core::DriveFamily::Bds5, QObject* parent = nullptr);
+    ~VariableModel() override;
+
+    const VariableRules& rules() const { return *m_rules; }
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;
@@ -49,18 +54,19 @@ public:
     QStringList pinned() const;
     // "NAME value" lines (Motion Link's .VAR) for the given variables that have a value.
     QString varLines(const QStringList& names) const;
-    VariableValidator::Context validationContext() const;
+    VariableRules::Context validationContext() const;
+    int variableCount() const { return int(m_rows.size()); }
 
 signals:
-    // A user's edit passed validation: send instruction ("VMAX 3000") to the drive.
-    void editRequested(const QString& name, const QString& instruction);
+    // A user's edit passed the checks: send lines ("VMAX 3000") to the drive.
+    void editRequested(const QString& name, const QStringList& lines);
     // A user's edit was refused before sending; message names the drive error it would have caused.
     void editRefused(const QString& name, const QString& message);
 
 private:
     struct Row {
         QString name;
-        const drive_core::catalog::bds5::VariableInfo* info = nullptr;
+        const drive_core::catalog::Parameter* info = nullptr;
         QString value;
         bool changed = false;
         bool pinned = false;
@@ -73,9 +79,9 @@ private:
 
     QVariant rowData(const Row& row, int column, int role) const;
     QString displayValue(const Row& row) const;
-    QString limitsText(const Row& row) const;
     void rowChanged(int rowIndex);
 
+    std::unique_ptr<VariableRules> m_rules;
     std::vector<Row> m_rows;
     std::vector<Group> m_groups;
     std::vector<int> m_groupOfRow;

@@ -1,15 +1,19 @@
-// VariableSync: keeps a VariableModel in step with the drive through the session — polls the variables
-// a view shows ("P A B C", a few at a time, paced to the link's baud rate) and sends the user's edits,
-// reading each back. Polls only at an interactive or monitor prompt: a running program has no prompt and
-// the IDE never interrupts it. GUI thread; never blocks.
+// VariableSync: keeps a VariableModel in step with the drive through its family's DriveSession — polls the
+// variables a view shows (a few at a time where the family reads several in one line), paced so the link
+// stays at least half free for the user, and sends the user's edits, reading each back. Polls only when its
+// host says the link may take one (a BDS5 at an interactive or monitor prompt; no transfer under way); the
+// polls stay out of the terminal (DriveSession::sendQuiet), the user's edits show there. GUI thread.
 #pragma once
 
-#include "serialport/bds5_session.h"
+#include "session_host.h"
+
+#include "serialport/drive_session.h"
 
 #include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
 #include <QPointer>
+#include <QSet>
 #include <QStringList>
 #include <QTimer>
 
@@ -17,13 +21,12 @@
 
 namespace app {
 
-class DriveConnection;
 class VariableModel;
 
 class VariableSync final : public QObject {
     Q_OBJECT
 public:
-    VariableSync(DriveConnection& connection, VariableModel& model, QObject* parent = nullptr);
+    VariableSync(SessionHost host, VariableModel& model, QObject* parent = nullptr);
 
     // Which variables to poll, asked afresh each round (the rows a view shows, the watch list).
     void setWanted(std::function<QStringList()> wanted) { m_wanted = std::move(wanted); }
@@ -31,38 +34,40 @@ public:
     bool isLive() const { return m_live; }
     // Reads names once, now (queued behind anything already in flight).
     void readNow(const QStringList& names);
-    // Sends "NAME value" and reads NAME back. writeFinished() says how it went.
-    void write(const QString& name, const QString& instruction);
-    // Why polling waits, or empty while it runs: for the dock's status line.
-    QString pauseReason() const;
-
-    static constexpr int kBatch = 8; // variables per P: well inside the 15-entry line limit
+    // Sends the edit's lines and reads the name back. writeFinished() says how it went.
+    void write(const QString& name, const QStringList& lines);
+    // Why polling waits, or empty while it runs: for the browser's status line.
+    QString pauseReason() const { return m_pauseReason; }
 
 signals:
     void writeFinished(const QString& name, bool accepted, const QString& message);
     void pauseReasonChanged(const QString& reason);
+    void valueRead(const QString& name, const QString& value);
 
 private:
     enum class Kind { Poll, Write, ReadBack };
     struct Request {
         Kind kind;
         QStringList names;
+        bool last = true; // Write: the edit's last line
+        qint64 sentAt = 0;
     };
 
     void poll();
     void follow();
-    void onFinished(quint64 id, const serialport::Bds5Response& response);
-    void onFailed(quint64 id, const QString& reason);
-    void applyValues(const QStringList& names, const serialport::Bds5Response& response);
+    void read(const QStringList& names, Kind kind);
+    void onAnswered(quint64 id, const serialport::LineAnswer& answer);
+    void onLost(quint64 id, const QString& reason);
+    void applyValues(const QStringList& names, const serialport::LineAnswer& answer);
     quint64 send(const QString& line, Request request);
-    int intervalMsFor(int names) const;
 
-    DriveConnection& m_connection;
+    SessionHost m_host;
     VariableModel& m_model;
-    QPointer<serialport::Bds5Session> m_session;
+    QPointer<serialport::DriveSession> m_session;
     std::function<QStringList()> m_wanted;
     QHash<quint64, Request> m_requests;
-    QTimer m_timer; // ticks every kMinIntervalMs; m_notBefore paces the polls
+    QSet<QString> m_refused; // edits whose earlier line the drive refused: their last line says nothing more
+    QTimer m_timer;          // ticks often; m_notBefore paces the polls
     QElapsedTimer m_clock;
     qint64 m_notBefore = 0;
     int m_cursor = 0; // next position in the wanted list

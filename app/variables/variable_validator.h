@@ -3,6 +3,8 @@
 // Pure; no I/O. Values are in the user units the drive prints; limits are converted with NUM/DEN when known.
 #pragma once
 
+#include "variable_rules.h"
+
 #include "drive_core/catalog/bds5_catalog.h"
 
 #include <QCoreApplication>
@@ -18,9 +20,7 @@ class VariableValidator {
 
 public:
     // What the validator knows about the drive; a lookup returns nullopt when the value is not known yet.
-    struct Context {
-        std::function<std::optional<double>(const QString& name)> valueOf;
-    };
+    using Context = VariableRules::Context;
     struct Verdict {
         bool ok = false;
         QString instruction; // "NAME value", ready to send, when ok

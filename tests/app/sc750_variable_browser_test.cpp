@@ -5,7 +5,8 @@
 #include "app/main_window.h"
 #include "families/sc750/sc750_controller_menu.h"
 #include "families/sc750/sc750_debugger.h"
-#include "families/sc750/sc750_variable_browser.h"
+#include "variables/variable_browser.h"
+#include "variables/variable_model.h"
 #include "families/sc750/sc750_variable_groups.h"
 #include "families/sc750/sc750_variables_dock.h"
 #include "families/sc750/sc750_workspace.h"
@@ -21,7 +22,7 @@
 #include <QTreeWidget>
 
 using app::MainWindow;
-using app::Sc750VariableBrowser;
+using app::VariableBrowser;
 using drive_core::DriveFamily;
 namespace catalog = drive_core::catalog::sc750;
 
@@ -72,9 +73,9 @@ private slots:
         dock->showAllVariables();
         dock->setFloating(true);
         dock->resize(900, 700);
-        Sc750VariableBrowser* browser = dock->browser();
+        VariableBrowser* browser = dock->browser();
         QVERIFY(browser->isVisible());
-        QCOMPARE(browser->variableCount(), int(catalog::variables().size()));
+        QCOMPARE(browser->model().variableCount(), int(catalog::variables().size()));
 
         // The set-up parameters are at the top, in view: their power-up values arrive by themselves.
         QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("KVI")), QStringLiteral("5"), kTimeoutMs);
@@ -83,8 +84,8 @@ private slots:
         // A value written through the browser is what the controller reports, read back with G.
         browser->reveal(QStringLiteral("RUN.SPEED"));
         QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("RUN.SPEED")), QStringLiteral("1000"), kTimeoutMs);
-        QSignalSpy written(browser, &Sc750VariableBrowser::written);
-        QVERIFY(browser->writeValue(QStringLiteral("RUN.SPEED"), QStringLiteral("1234")));
+        QSignalSpy written(browser, &VariableBrowser::written);
+        QVERIFY(browser->editValue(QStringLiteral("RUN.SPEED"), QStringLiteral("1234")));
         QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, kTimeoutMs);
         QVERIFY(written.at(0).at(1).toBool());
         QCOMPARE(browser->value(QStringLiteral("RUN.SPEED")), QStringLiteral("1234"));
@@ -97,8 +98,8 @@ private slots:
         // requests still do).
         browser->setLive(false);
         QSignalSpy sent(ws.session(), &serialport::Sc750Session::rawSent);
-        QVERIFY(!browser->writeValue(QStringLiteral("KVI"), QStringLiteral("5000")));
-        QVERIFY2(browser->message().contains(QStringLiteral("0 \u2013 1000")), qPrintable(browser->message()));
+        QVERIFY(!browser->editValue(QStringLiteral("KVI"), QStringLiteral("5000")));
+        QVERIFY2(browser->statusText().contains(QStringLiteral("0 \u2013 1000")), qPrintable(browser->statusText()));
         // One command at a time on one queue (PROTOCOL.md 3): a read queued after the refused write and
         // answered leaves no room for a P frame of that write.
         QString marker;
@@ -110,10 +111,8 @@ private slots:
 
         // Search narrows the tree.
         browser->setFilter(QStringLiteral("registration"));
-        QVERIFY(browser->tree()->topLevelItemCount() > 1);
-        int shownGroups = 0;
-        for (int g = 0; g < browser->tree()->topLevelItemCount(); ++g) shownGroups += !browser->tree()->topLevelItem(g)->isHidden();
-        QVERIFY(shownGroups >= 1 && shownGroups < browser->tree()->topLevelItemCount());
+        const int shownGroups = browser->allView()->model()->rowCount();
+        QVERIFY2(shownGroups >= 1 && shownGroups < browser->model().rowCount(), qPrintable(QString::number(shownGroups)));
         browser->setFilter(QString());
 
         // While a program runs the controller refuses writes: its own answer is shown.
@@ -121,14 +120,14 @@ private slots:
         ws.debugger().run();
         QTRY_COMPARE_WITH_TIMEOUT(ws.debugger().state(), app::Sc750Debugger::State::Running, kTimeoutMs);
         dock->showAllVariables();
-        QVERIFY(browser->writeValue(QStringLiteral("RUN.SPEED"), QStringLiteral("500")));
+        QVERIFY(browser->editValue(QStringLiteral("RUN.SPEED"), QStringLiteral("500")));
         QTRY_COMPARE_WITH_TIMEOUT(written.count(), 2, kTimeoutMs);
         QVERIFY(!written.at(1).at(1).toBool());
-        QVERIFY2(browser->message().contains(QStringLiteral("PROGRAM RUNNING")), qPrintable(browser->message()));
+        QVERIFY2(browser->statusText().contains(QStringLiteral("PROGRAM RUNNING")), qPrintable(browser->statusText()));
         QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("RUN.SPEED")), QStringLiteral("1234"), kTimeoutMs);
 
         // Add to Watch: the Motion Dialogue list reads it.
-        emit browser->watchRequested(QStringLiteral("KVI"));
+        emit browser->listRequested(QStringLiteral("KVI"));
         QTRY_COMPARE_WITH_TIMEOUT(dock->value(QStringLiteral("KVI")), QStringLiteral("5"), kTimeoutMs);
     }
 };

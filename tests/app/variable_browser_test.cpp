@@ -10,6 +10,7 @@
 #include "app/variables/variable_model.h"
 #include "app/variables/variable_sync.h"
 #include "app/variables/variable_validator.h"
+#include "app/variables/variable_browser.h"
 #include "app/variables/variables_dock.h"
 
 #include "serialport/bds5_session.h"
@@ -86,8 +87,8 @@ private slots:
     void theCatalogIsGroupedWithUnitsLimitsAndConditions() {
         VariableModel model;
         const QStringList groups = model.groupNames();
-        for (const char* g : {"Position", "Velocity", "Current", "Loop gains", "Limits", "Units", "I/O", "Switches",
-                              "Communication", "User (X, XS)"})
+        for (const char* g : {"Position", "Velocity", "Current", "Loop gains", "Limits", "Units", "Inputs and outputs",
+                              "Switches", "Communication", "User variables"})
             QVERIFY2(groups.contains(QString::fromLatin1(g)), g);
         QVERIFY(model.indexOf(QStringLiteral("X250")).isValid());
         QVERIFY(model.indexOf(QStringLiteral("XS50")).isValid());
@@ -142,8 +143,9 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::VariablesDock& dock = *window.variablesDock();
-        dock.show();
+        app::VariablesDock& variables = *window.variablesDock();
+        variables.show();
+        app::VariableBrowser& dock = *variables.browser();
         dock.reveal(QStringLiteral("X1"));
         dock.editValue(QStringLiteral("X1"), QStringLiteral("1234"));
         QTRY_COMPARE_WITH_TIMEOUT(dock.model().value(QStringLiteral("X1")), QStringLiteral("1234"), kDriveTimeoutMs);
@@ -178,8 +180,9 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::VariablesDock& dock = *window.variablesDock();
-        dock.show();
+        app::VariablesDock& variables = *window.variablesDock();
+        variables.show();
+        app::VariableBrowser& dock = *variables.browser();
         QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
         dock.editValue(QStringLiteral("ADDR"), QStringLiteral("91"));
         QVERIFY2(dock.statusText().startsWith(QStringLiteral("ERR 83 BAD OR OUT OF RANGE")),
@@ -188,7 +191,7 @@ private slots:
 
         // The drive's own refusal: EXTLOOP may change only while disabled, and the browser has not read
         // ACTIVE, so the drive is the one to say no (ERR 51).
-        dock.hide(); // no polling: ACTIVE stays unknown
+        variables.hide(); // no polling: ACTIVE stays unknown
         for (const char* line : {"PLIM OFF", "EN"}) window.connection().sendCommand(QString::fromLatin1(line));
         dock.editValue(QStringLiteral("EXTLOOP"), QStringLiteral("ON"));
         QTRY_VERIFY_WITH_TIMEOUT(dock.statusText().startsWith(QStringLiteral("The drive refused EXTLOOP 1: ERR 51")),
@@ -199,8 +202,9 @@ private slots:
         MainWindow window;
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
-        app::VariablesDock& dock = *window.variablesDock();
-        dock.show();
+        app::VariablesDock& variables = *window.variablesDock();
+        variables.show();
+        app::VariableBrowser& dock = *variables.browser();
         const QAbstractItemModel& shown = *dock.allView()->model();
         const QStringList all = shownNames(shown);
         QVERIFY(all.contains(QStringLiteral("ACC")) && all.contains(QStringLiteral("KVI")));
@@ -219,8 +223,9 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::VariablesDock& dock = *window.variablesDock();
-        dock.show();
+        app::VariablesDock& variables = *window.variablesDock();
+        variables.show();
+        app::VariableBrowser& dock = *variables.browser();
         dock.reveal(QStringLiteral("VFB"));
         QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
         QTRY_VERIFY_WITH_TIMEOUT(allSent(sent).contains("P "), kDriveTimeoutMs); // the rows in view are polled

@@ -15,7 +15,7 @@
 #include "families/sc750/sc750_setup_dialog.h"
 #include "families/sc750/sc750_seven_segment.h"
 #include "families/sc750/sc750_status_display.h"
-#include "families/sc750/sc750_variable_browser.h"
+#include "variables/variable_browser.h"
 #include "families/sc750/sc750_variables_dock.h"
 #include "families/sc750/sc750_workspace.h"
 #include "scope/variable_watcher.h"
@@ -157,11 +157,11 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                          vars->showAllVariables();
                          vars->setFloating(true);
                          vars->resize(1040, 640);
-                         vars->browser()->reveal(QStringLiteral("POSITION"));
+                         vars->browser()->reveal(QStringLiteral("ACCEL.RATE"));
                      },
                      .ready = [&window] {
-                         Sc750VariableBrowser* browser = sc750(window)->variablesDock()->browser();
-                         for (const char* name : {"AUTOSTART", "RUN.SPEED", "POSITION", "IFB", "LOGGEDON"})
+                         VariableBrowser* browser = sc750(window)->variablesDock()->browser();
+                         for (const char* name : {"ACCEL.RATE", "RUN.SPEED", "POSITION", "IFB"})
                              if (browser->value(QString::fromLatin1(name)).isEmpty()) return false; // all in view read
                          return true;
                      },

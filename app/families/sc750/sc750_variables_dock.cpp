@@ -2,9 +2,10 @@
 #include "sc750_variables_dock.h"
 
 #include "sc750_debugger.h"
-#include "sc750_variable_browser.h"
 #include "sc750_workspace.h"
+#include "session_host.h"
 #include "theme.h"
+#include "variables/variable_browser.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
 
@@ -52,10 +53,11 @@ Sc750VariablesDock::Sc750VariablesDock(Sc750Workspace& workspace, QWidget* paren
     // Two tabs: Motion Dialogue's list of typed names, and every predefined variable of the catalog.
     m_tabs = new QTabWidget(this);
     m_tabs->addTab(body, tr("&Watch"));
-    m_browser = new Sc750VariableBrowser(workspace);
+    m_browser = new VariableBrowser(SessionHost::of(workspace));
+    m_browser->setListAction(tr("Add \"%1\" to the &Watch Tab"));
     m_tabs->addTab(m_browser, tr("All &Variables"));
     setWidget(m_tabs);
-    connect(m_browser, &Sc750VariableBrowser::watchRequested, this, [this](const QString& name) {
+    connect(m_browser, &VariableBrowser::listRequested, this, [this](const QString& name) {
         readVariable(name);
         m_tabs->setCurrentIndex(0);
     });

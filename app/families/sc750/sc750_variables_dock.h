@@ -2,7 +2,7 @@
 // variable, "A(3)", or a predefined variable/parameter) and Enter reads it into the list; editing a value
 // writes it, which the controller allows only while no program executes; Refresh reads every row again, as
 // does the program stopping (at a breakpoint, by Stop, at its end or an error).
-// Its second tab is the variable browser of every predefined variable (Sc750VariableBrowser).
+// Its second tab is the variable browser of every predefined variable (the family-neutral VariableBrowser).
 // GUI thread only.
 #pragma once
 
@@ -17,7 +17,7 @@ class QTableWidget;
 
 namespace app {
 
-class Sc750VariableBrowser;
+class VariableBrowser;
 class Sc750Workspace;
 
 class Sc750VariablesDock final : public QDockWidget {
@@ -35,7 +35,7 @@ public:
     void focusName();
     // Shows the dock on its All Variables tab.
     void showAllVariables();
-    Sc750VariableBrowser* browser() const { return m_browser; }
+    VariableBrowser* browser() const { return m_browser; }
 
     // The value shown for name ("" when not listed or not read yet), and the last error, for tests.
     QString value(const QString& name) const;
@@ -57,7 +57,7 @@ private:
     QCompleter* m_completer;
     QTableWidget* m_table;
     QTabWidget* m_tabs = nullptr;
-    Sc750VariableBrowser* m_browser = nullptr;
+    VariableBrowser* m_browser = nullptr;
     QPushButton* m_refresh;
     QLabel* m_message;
     bool m_writable = true;

@@ -1,6 +1,7 @@
 // SetupWizard: the pages, built from catalog names.
 #include "setup_wizard.h"
 
+#include "session_host.h"
 #include "bench_page.h"
 #include "motor_choice.h"
 #include "parameter_page.h"
@@ -21,13 +22,13 @@ QStringList numbered(const QString& stem, int first, int last) {
 } // namespace
 
 SetupWizard::SetupWizard(DriveConnection& connection, QWidget* parent)
-    : QWizard(parent), m_model(new VariableModel(this)), m_changes(new WizardChanges(this)) {
+    : QWizard(parent), m_model(new VariableModel(drive_core::DriveFamily::Bds5, this)), m_changes(new WizardChanges(this)) {
     setObjectName(QStringLiteral("setupWizard"));
     setWindowTitle(tr("BDS5 Setup"));
     setWizardStyle(QWizard::ModernStyle);
     setOption(QWizard::NoBackButtonOnStartPage);
     resize(860, 600);
-    m_sync = new VariableSync(connection, *m_model, this);
+    m_sync = new VariableSync(SessionHost::of(connection), *m_model, this);
     m_context = std::make_unique<WizardContext>(WizardContext{connection, *m_model, *m_sync, *m_changes});
     m_sync->setWanted([this] { return liveNames(); });
     connect(m_model, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex& first) {

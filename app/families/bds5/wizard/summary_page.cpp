@@ -75,7 +75,7 @@ void SummaryPage::refresh() {
 void SummaryPage::send() {
     for (const QString& name : m_context.changes.changedNames()) {
         m_status[name] = tr("sending...");
-        m_context.sync.write(name, name + QLatin1Char(' ') + m_context.changes.change(name).edited);
+        m_context.sync.write(name, {name + QLatin1Char(' ') + m_context.changes.change(name).edited});
     }
     refresh();
 }
