@@ -2,9 +2,9 @@
 // family-neutral half of "watch" (servodesk-cli watch today). The BDS5 prints them with one "P A B" line at
 // its prompt; the SC750 answers a G frame per variable, a program running or not; the PMC-960 answers its
 // out-of-band status polls (<attn> g f v i for G!, SF!, V!, I!) at any time. The names are the family's
-// watch choices (watch_choices.h). The IDE's Watch Variables reads through it for the SC750 and the
-// PMC-960 (app/scope/session_watch_source); the BDS5's keeps its P polls out of the terminal
-// (app/families/bds5/bds5_watch_source).
+// watch choices (watch_choices.h). The IDE's Watch Variables reads through it for every family
+// (app/scope/session_watch_source); its polls go by DriveSession::sendQuiet, so the BDS5's P stays out of the
+// terminal.
 // GUI thread; never blocks. The session must outlive the poller.
 //
 //   poller.poll({"POSITION", "VELOCITY"});   // later: answered({1024, 30.5}) or failed("...", refused)

@@ -49,6 +49,7 @@ void SessionWorkspace::activate(const ConnectionChoice& choice) {
     deactivate();
     m_link = choice.makeLink();
     m_linkText = m_link->description();
+    m_lineAxis = choice.axis;
     m_drive = serialport::makeDriveSession(m_family, *m_link);
     connect(m_link.get(), &serialport::Link::opened, this, &SessionWorkspace::onOpened);
     connect(m_link.get(), &serialport::Link::errorOccurred, this, &SessionWorkspace::onLinkError);

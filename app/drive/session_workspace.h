@@ -54,6 +54,8 @@ protected:
     const FamilyTuningDock& tuning() const { return m_tuning; }
     // What the status bar calls the connection: the link's description until the family names the drive.
     const QString& linkText() const { return m_linkText; }
+    // The axis's ID when the link is one axis of a multidrop line (Machine > Use Axis); "" otherwise.
+    const QString& lineAxis() const { return m_lineAxis; }
     void setLinkText(const QString& text) { m_linkText = text; }
     // For the derived destructor, first: the link and the session go and nothing from them reaches it.
     void releaseLink();
@@ -71,6 +73,7 @@ private:
     FamilyTuningDock m_tuning;
     QPointer<WatchView> m_watch;
     QString m_linkText;
+    QString m_lineAxis;
     bool m_connected = false;
     LinkReconnector m_reconnector;
 };

@@ -6,6 +6,7 @@
 
 #include "drive_connection.h"
 #include "family_workspace.h"
+#include "families/sc750/sc750_workspace.h"
 #include "machine/axes_dock.h"
 #include "machine/axis_compare.h"
 
@@ -107,6 +108,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(connected(window), kJobMs);
         QVERIFY2(window.windowTitle().contains("axis " + axis), qPrintable(window.windowTitle()));
         QVERIFY2(linkText(window).startsWith("axis " + axis + " on Simulated"), qPrintable(linkText(window)));
+        if (DriveFamily(family) == DriveFamily::Sc750) // its own axis field (Controller > Axis, the status bar)
+            QCOMPARE(static_cast<app::Sc750Workspace*>(window.workspace(DriveFamily::Sc750))->axis(), axis.toInt());
         for (const QString& line : change) QVERIFY2(typeLine(window, line), qPrintable(line));
 
         // Compare: exactly the one variable, on that axis, the file's value beside the drive's.

@@ -32,6 +32,8 @@
 #include <QStatusBar>
 #include <QStyle>
 
+#include <utility>
+
 namespace app {
 
 Sc750Workspace::Sc750Workspace(MainWindow& mainWindow)
@@ -173,6 +175,16 @@ QWidget* Sc750Workspace::showFunctionCall() {
 
 void Sc750Workspace::sessionCreated(serialport::DriveSession& session) {
     m_session = &static_cast<serialport::Sc750DriveSession&>(session).sc750();
+    // One axis of a line: the AxisLink logs it on; the axis shown (and logged on again after a reconnection)
+    // is that one, not the RS-232 address 255. A later plain link goes back to 255, which a lone SC750 on
+    // RS-232 answers to.
+    if (!lineAxis().isEmpty()) {
+        m_axis = qBound(0, lineAxis().toInt(), 255);
+        m_axisFromLine = true;
+    } else if (std::exchange(m_axisFromLine, false)) {
+        m_axis = 255;
+    }
+    showCursorStatus();
     connect(m_session, &serialport::Sc750Session::finished, this,
             [this](quint64 id, const serialport::Sc750Reply& reply) {
                 const auto handlers = m_waiting.take(id);

@@ -90,6 +90,7 @@ private:
     QPointer<editor::ProgramEditor> m_editor;
     QHash<quint64, std::pair<Done, Failed>> m_waiting;
     int m_axis = 255;
+    bool m_axisFromLine = false; // m_axis is the line's axis (Machine > Use Axis), not the user's choice
     bool m_shown = false;
     bool m_placed = false; // the output dock moved under the editor on first show
 };
