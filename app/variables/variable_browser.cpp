@@ -46,12 +46,15 @@ VariableBrowser::VariableBrowser(SessionHost host, QWidget* parent)
     m_search->setPlaceholderText(tr("Search names and descriptions"));
     m_search->setClearButtonEnabled(true);
     m_live = new QCheckBox(tr("&Live"), this);
-    m_live->setChecked(true);
-    m_live->setToolTip(tr("Read the values in view from the drive, paced to the link"));
+    m_live->setChecked(m_model->rules().liveByDefault());
+    m_live->setToolTip(tr("Read the values in view from the drive again and again, paced to the link"));
+    m_refresh = new QPushButton(tr("&Refresh"), this);
+    m_refresh->setToolTip(tr("Read the values in view and the watch list once, now"));
     m_copy = new QPushButton(tr("Copy as .VAR"), this);
     m_copy->setVisible(host.family == drive_core::DriveFamily::Bds5); // Motion Link's variable file
     bar->addWidget(m_search, 1);
     bar->addWidget(m_live);
+    bar->addWidget(m_refresh);
     bar->addWidget(m_copy);
     layout->addLayout(bar);
     m_tabs = new QTabWidget(this);
@@ -72,6 +75,7 @@ VariableBrowser::VariableBrowser(SessionHost host, QWidget* parent)
     connect(m_search, &QLineEdit::textChanged, this, &VariableBrowser::setFilter);
     connect(m_live, &QCheckBox::toggled, m_sync, &VariableSync::setLive);
     connect(m_copy, &QPushButton::clicked, this, &VariableBrowser::copyAsVar);
+    connect(m_refresh, &QPushButton::clicked, this, &VariableBrowser::refresh);
     connect(m_model, &VariableModel::editRequested, m_sync, &VariableSync::write);
     connect(m_model, &VariableModel::editRefused, this,
             [this](const QString&, const QString& message) { setStatus(message, true); });
@@ -96,6 +100,8 @@ QTreeView* VariableBrowser::makeView(QSortFilterProxyModel* proxy) {
     view->setContextMenuPolicy(Qt::CustomContextMenu);
     view->header()->setStretchLastSection(true);
     view->setColumnWidth(VariableModel::Value, 110);
+    view->setColumnWidth(VariableModel::Second, 110);
+    view->setColumnHidden(VariableModel::Second, m_model->rules().secondTitle().isEmpty());
     view->setColumnWidth(VariableModel::Unit, 60);
     view->setColumnWidth(VariableModel::Limits, 150);
     view->setColumnWidth(VariableModel::Condition, 100);
@@ -122,6 +128,20 @@ void VariableBrowser::setFilter(const QString& text) {
 
 void VariableBrowser::setLive(bool live) {
     m_live->setChecked(live);
+}
+
+void VariableBrowser::refresh() {
+    m_sync->readNow(visibleNames());
+}
+
+void VariableBrowser::readAll() {
+    QStringList names;
+    for (int g = 0; g < m_model->rowCount(); ++g) {
+        const QModelIndex group = m_model->index(g, 0);
+        for (int r = 0; r < m_model->rowCount(group); ++r)
+            names << m_model->index(r, 0, group).data(VariableModel::NameRole).toString();
+    }
+    m_sync->readNow(names);
 }
 
 // The rows a user can see, the watch list (always live), and what the family's limits depend on.

@@ -45,6 +45,9 @@ public:
     void reveal(const QString& name);
     void showWatchList(bool watch);
     void setLive(bool live);
+    // Reads the rows in view and the watch list once (Refresh), or every variable (a connection's first read).
+    void refresh();
+    void readAll();
     void setFilter(const QString& text);
     // "NAME value" lines of the selected variables (or of the watch list when nothing is selected).
     QString selectionAsVar() const;
@@ -72,6 +75,7 @@ private:
     QLineEdit* m_search;
     QCheckBox* m_live;
     QPushButton* m_copy;
+    QPushButton* m_refresh;
     QLabel* m_status;
     QLabel* m_pause;
     QString m_listAction;

@@ -83,7 +83,8 @@ QVariant VariableModel::headerData(int section, Qt::Orientation orientation, int
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
     switch (section) {
     case Name: return tr("Variable");
-    case Value: return tr("Value");
+    case Value: return m_rules->valueTitle();
+    case Second: return m_rules->secondTitle();
     case Unit: return tr("Unit");
     case Limits: return tr("Limits");
     case Condition: return tr("Writable");
@@ -118,6 +119,8 @@ QVariant VariableModel::rowData(const Row& row, int column, int role) const {
         return text(row.info->description) + QStringLiteral(" (%1)").arg(text(row.info->manualLines)) +
                (row.info->chosen ? tr("; range chosen: the manual gives none") : QString());
     case Qt::BackgroundRole:
+        if (column == Second && !row.second.isEmpty() && !row.value.isEmpty() && row.second != row.value)
+            return QBrush(QColor(0xff, 0xf4, 0xce)); // in use differs from stored
         return row.changed && column == Value ? QVariant(QBrush(QColor(0xff, 0xe0, 0x82))) : QVariant();
     case Qt::ForegroundRole:
         if (column == Value && !row.readable) return QBrush(QColor(0x9e, 0x9e, 0x9e));
@@ -131,7 +134,8 @@ QVariant VariableModel::rowData(const Row& row, int column, int role) const {
             return font;
         }
         return {};
-    case Qt::TextAlignmentRole: return column == Value ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter)) : QVariant();
+    case Qt::TextAlignmentRole:
+        return column == Value || column == Second ? QVariant(int(Qt::AlignRight | Qt::AlignVCenter)) : QVariant();
     case Qt::EditRole:
         if (column == Value) return row.value;
         [[fallthrough]];
@@ -139,6 +143,7 @@ QVariant VariableModel::rowData(const Row& row, int column, int role) const {
         switch (column) {
         case Name: return row.pinned ? QStringLiteral("\u2605 ") + row.name : row.name;
         case Value: return displayValue(row);
+        case Second: return m_rules->displayValue(*row.info, row.second);
         case Unit: return text(row.info->unit);
         case Limits: return m_rules->limitsText(row.name, *row.info, validationContext());
         case Condition: return conditionText(row.info->writable);
@@ -170,7 +175,7 @@ Qt::ItemFlags VariableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
     if (index.internalId() == kGroupId || index.column() != Value) return f;
     const Row& row = m_rows[std::size_t(m_groups[std::size_t(index.internalId() - 1)].rows[std::size_t(index.row())])];
-    const bool writable = row.info->writable != cat::Writable::Never && row.info->writable != cat::Writable::Factory;
+    const bool writable = m_rules->editable(row.name, *row.info);
     return writable ? f | Qt::ItemIsEditable : f;
 }
 
@@ -208,6 +213,18 @@ void VariableModel::setValue(const QString& name, const QString& printed) {
             emit dataChanged(index(0, Limits, group), index(rowCount(group) - 1, Limits, group));
         }
     }
+}
+
+void VariableModel::setSecond(const QString& name, const QString& printed) {
+    const auto it = m_byName.constFind(name.toUpper());
+    if (it == m_byName.constEnd() || m_rows[std::size_t(*it)].second == printed) return;
+    m_rows[std::size_t(*it)].second = printed;
+    rowChanged(*it);
+}
+
+QString VariableModel::second(const QString& name) const {
+    const auto it = m_byName.constFind(name.toUpper());
+    return it == m_byName.constEnd() ? QString() : m_rows[std::size_t(*it)].second;
 }
 
 QString VariableModel::value(const QString& name) const {

@@ -19,7 +19,7 @@ namespace app {
 class VariableModel final : public QAbstractItemModel {
     Q_OBJECT
 public:
-    enum Column { Name, Value, Unit, Limits, Condition, Description, ColumnCount };
+    enum Column { Name, Value, Second, Unit, Limits, Condition, Description, ColumnCount }; // Second: rules
     enum Role { NameRole = Qt::UserRole + 1, PinnedRole, ChangedRole };
 
     explicit VariableModel(drive_core::DriveFamily family = drive_core::DriveFamily::Bds5, QObject* parent = nullptr);
@@ -43,6 +43,9 @@ public:
     // row changed (highlighted) until clearChanged().
     void setValue(const QString& name, const QString& printed);
     QString value(const QString& name) const;
+    // The second value the family keeps beside it (VariableRules::secondTitle), as the drive printed it.
+    void setSecond(const QString& name, const QString& printed);
+    QString second(const QString& name) const;
     std::optional<double> number(const QString& name) const;
     bool isChanged(const QString& name) const;
     void clearChanged();
@@ -68,6 +71,7 @@ private:
         QString name;
         const drive_core::catalog::Parameter* info = nullptr;
         QString value;
+        QString second;
         bool changed = false;
         bool pinned = false;
         bool readable = true;

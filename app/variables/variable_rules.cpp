@@ -2,6 +2,7 @@
 #include "variable_rules.h"
 
 #include "families/bds5/bds5_variable_rules.h"
+#include "families/pmc960/pmc960_variable_rules.h"
 #include "families/sc750/sc750_variable_rules.h"
 
 #include <cmath>
@@ -14,9 +15,9 @@ std::unique_ptr<VariableRules> VariableRules::make(drive_core::DriveFamily famil
     switch (family) {
     case drive_core::DriveFamily::Bds5: return std::make_unique<Bds5VariableRules>();
     case drive_core::DriveFamily::Sc750: return std::make_unique<Sc750VariableRules>();
-    case drive_core::DriveFamily::Pmc960: break; // its parameter table is still its own dock (pmc960_parameter_dock.h)
+    case drive_core::DriveFamily::Pmc960: return std::make_unique<Pmc960VariableRules>();
     }
-    return nullptr;
+    return std::make_unique<Bds5VariableRules>();
 }
 
 QString VariableRules::text(std::string_view view) {
@@ -31,6 +32,10 @@ QString VariableRules::limitsText(const QString&, const cat::Parameter& p, const
     if (p.type == cat::ValueType::Switch) return QStringLiteral("OFF/ON");
     if (!p.ranged) return QStringLiteral("\u2014");
     return QStringLiteral("%1 \u2026 %2").arg(QString::number(p.minimum, 'g', 10), QString::number(p.maximum, 'g', 10));
+}
+
+bool VariableRules::editable(const QString&, const cat::Parameter& p) const {
+    return p.writable != cat::Writable::Never && p.writable != cat::Writable::Factory;
 }
 
 QString VariableRules::displayValue(const cat::Parameter&, const QString& printed) const {

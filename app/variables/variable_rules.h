@@ -2,8 +2,7 @@
 // line, how an edit is checked before it goes (as the drive checks it, naming the drive's error), how the
 // catalog is grouped and its limits read. The browser itself (VariableModel, VariableSync, VariableBrowser)
 // is family-neutral over the common catalog (drive_core/catalog/drive_catalog.h) and the DriveSession.
-// One implementation a family, in app/families/<f>/; make() picks (nullptr for the PMC-960, whose parameter
-// table is still its own dock, families/pmc960/pmc960_parameter_dock.h). Pure: no I/O.
+// One implementation a family, in app/families/<f>/; make() picks. Pure: no I/O.
 #pragma once
 
 #include "drive_core/catalog/drive_catalog.h"
@@ -43,6 +42,8 @@ public:
     virtual QString groupOf(const drive_core::catalog::Parameter& p) const;
     // The Limits column; the generic one prints the catalog's range.
     virtual QString limitsText(const QString& name, const drive_core::catalog::Parameter& p, const Context& c) const;
+    // Whether the user may change it here; the generic one: unless the catalog says read only or factory.
+    virtual bool editable(const QString& name, const drive_core::catalog::Parameter& p) const;
     // A value as shown (a BDS5 switch's 1 as ON); the generic one shows it as the drive printed it.
     virtual QString displayValue(const drive_core::catalog::Parameter& p, const QString& printed) const;
     virtual Verdict check(const QString& name, const QString& text, const Context& c) const = 0;
@@ -51,8 +52,9 @@ public:
     // Names read with the rows in view although no view shows them (what limits and checks depend on).
     virtual QStringList alsoRead(const Context&) const { return {}; }
 
-    // Reading: up to batch() names in one line; values() takes them from its answer (one per name, or
-    // empty when the answer does not fit); unreadable() names those the drive refused to print.
+    // Reading: up to batch() names in one line ("" when the drive has no way to show it); values() takes
+    // them from its answer (one per name, or empty when the answer does not fit); unreadable() names those
+    // the drive refused to print.
     virtual int batch() const { return 1; }
     // The least time between two polls, however fast the drive answers.
     virtual int pollIntervalMs() const { return 40; }
@@ -61,6 +63,13 @@ public:
     virtual QStringList unreadable(const QStringList& names, const serialport::LineAnswer& answer) const;
     // The status line before anything happened.
     virtual QString hint() const = 0;
+    // The Value column's title; and a second value the drive keeps beside it (the PMC-960's in-use "!"
+    // beside its stored "?"): its column's title ("" for none) and the line that reads it ("" for none).
+    virtual QString valueTitle() const { return tr("Value"); }
+    virtual QString secondTitle() const { return {}; }
+    virtual QString secondReadLine(const QString&) const { return {}; }
+    // Read the rows in view over and over (false: when asked — Refresh, a connection, after a write).
+    virtual bool liveByDefault() const { return true; }
 
     // The generic check of the common schema: read only, a number (integer where it must be), within range.
     static std::optional<QString> schemaProblem(const QString& name, const drive_core::catalog::Parameter& p,

@@ -10,7 +10,7 @@ constexpr int kTickMs = 40;
 } // namespace
 
 VariableSync::VariableSync(SessionHost host, VariableModel& model, QObject* parent)
-    : QObject(parent), m_host(std::move(host)), m_model(model) {
+    : QObject(parent), m_host(std::move(host)), m_model(model), m_live(model.rules().liveByDefault()) {
     connect(&m_timer, &QTimer::timeout, this, &VariableSync::poll);
     m_timer.start(kTickMs);
     m_clock.start();
@@ -39,7 +39,7 @@ void VariableSync::poll() {
     else if (const QString busy = m_host.busyReason(); !busy.isEmpty())
         reason = tr("paused: %1").arg(busy);
     else if (!m_live)
-        reason = tr("live values off");
+        reason = tr("live values off: Refresh reads the rows in view");
     if (reason != m_pauseReason) {
         m_pauseReason = reason;
         emit pauseReasonChanged(reason);
@@ -76,12 +76,18 @@ void VariableSync::write(const QString& name, const QStringList& lines) {
         return;
     }
     m_refused.remove(name);
-    for (qsizetype i = 0; i < lines.size(); ++i) send(lines[i], {Kind::Write, {name}, i == lines.size() - 1});
+    const QString edit = lines.join(QStringLiteral(", ")); // "X1 1234"; "SW1, TGP24, SW0"
+    for (qsizetype i = 0; i < lines.size(); ++i) send(lines[i], {Kind::Write, {name}, i == lines.size() - 1, edit});
     read({name}, Kind::ReadBack);
 }
 
 quint64 VariableSync::send(const QString& line, Request request) {
     if (!m_session) return 0;
+    if (line.isEmpty()) { // the drive has no way to show it
+        if (request.kind != Kind::Second)
+            for (const QString& name : request.names) m_model.setUnreadable(name);
+        return 0;
+    }
     request.sentAt = m_clock.elapsed();
     const quint64 id = request.kind == Kind::Write ? m_session->sendLine(line) : m_session->sendQuiet(line);
     m_requests.insert(id, std::move(request));
@@ -101,16 +107,21 @@ void VariableSync::onAnswered(quint64 id, const serialport::LineAnswer& answer) 
             m_refused.insert(name);
             emit writeFinished(name, false, tr("The drive refused %1: %2").arg(answer.command, answer.error));
         } else if (request.last) {
-            emit writeFinished(name, true, tr("%1 sent").arg(answer.command));
+            emit writeFinished(name, true, tr("%1 sent").arg(request.edit));
         }
         break;
     case Kind::Poll:
     case Kind::ReadBack: applyValues(request.names, answer); break;
+    case Kind::Second:
+        if (const QStringList values = m_model.rules().values(request.names, answer); values.size() == 1)
+            m_model.setSecond(name, values.first());
+        break;
     }
     // Leave the link at least half free for the user: wait as long as the exchange took.
     if (request.kind == Kind::Poll)
         m_notBefore = m_clock.elapsed() +
                       std::max<qint64>(m_model.rules().pollIntervalMs(), m_clock.elapsed() - request.sentAt);
+    if (m_requests.isEmpty()) emit idle();
 }
 
 void VariableSync::onLost(quint64 id, const QString& reason) {
@@ -122,6 +133,7 @@ void VariableSync::onLost(quint64 id, const QString& reason) {
         m_refused.insert(request.names.first());
         emit writeFinished(request.names.first(), false, reason);
     }
+    if (m_requests.isEmpty()) emit idle();
 }
 
 void VariableSync::applyValues(const QStringList& names, const serialport::LineAnswer& answer) {
@@ -140,6 +152,7 @@ void VariableSync::applyValues(const QStringList& names, const serialport::LineA
     for (qsizetype i = 0; i < names.size(); ++i) {
         m_model.setValue(names[i], values[i]);
         emit valueRead(names[i], values[i]);
+        send(m_model.rules().secondReadLine(names[i]), {Kind::Second, {names[i]}});
     }
 }
 

@@ -38,18 +38,22 @@ public:
     void write(const QString& name, const QStringList& lines);
     // Why polling waits, or empty while it runs: for the browser's status line.
     QString pauseReason() const { return m_pauseReason; }
+    // Reads and writes sent and not yet answered (0 once a Refresh has finished).
+    int pending() const { return int(m_requests.size()); }
 
 signals:
     void writeFinished(const QString& name, bool accepted, const QString& message);
     void pauseReasonChanged(const QString& reason);
     void valueRead(const QString& name, const QString& value);
+    void idle(); // the last request in flight was answered
 
 private:
-    enum class Kind { Poll, Write, ReadBack };
+    enum class Kind { Poll, Write, ReadBack, Second };
     struct Request {
         Kind kind;
         QStringList names;
         bool last = true; // Write: the edit's last line
+        QString edit;     // Write: the edit's lines, as the message names them
         qint64 sentAt = 0;
     };
 

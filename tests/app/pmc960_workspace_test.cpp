@@ -11,7 +11,12 @@
 #include "app/errors/error_source.h"
 #include "app/main_window.h"
 #include "editor/mpl_language.h"
-#include "families/pmc960/pmc960_parameter_dock.h"
+#include "variables/variable_browser.h"
+#include "variables/variable_model.h"
+#include "variables/variable_sync.h"
+
+#include <QDockWidget>
+#include <QTreeView>
 #include "families/pmc960/pmc960_program_transfer.h"
 #include "families/pmc960/pmc960_routine_runner.h"
 #include "families/pmc960/pmc960_run_dialog.h"
@@ -439,40 +444,52 @@ private slots:
         window.show();
         Pmc960Workspace& ws = connectPmc960(window);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
-        app::Pmc960ParameterDock* table = ws.parameterDock();
-        QCOMPARE(table->table()->rowCount(), int(drive_core::catalog::pmc960::parameters().size()));
-        QTRY_COMPARE_WITH_TIMEOUT(table->pendingReads(), 0, kTimeoutMs);
-        QCOMPARE(table->stored(QStringLiteral("TGP")), QStringLiteral("16"));
-        QCOMPARE(table->inUse(QStringLiteral("TGP")), QStringLiteral("16"));
-        QCOMPARE(table->stored(QStringLiteral("A")), QStringLiteral("4000")); // stored vs in use while still
-        QCOMPARE(table->inUse(QStringLiteral("A")), QStringLiteral("0"));
-        QCOMPARE(table->stored(QStringLiteral("THI")), QStringLiteral("="));
+        app::VariableBrowser* table = ws.parameterBrowser();
+        const app::VariableModel& model = table->model();
+        QCOMPARE(model.variableCount(), int(drive_core::catalog::pmc960::parameters().size()));
+        // Every parameter is read once on connecting: stored (?) and in use (!).
+        QTRY_VERIFY_WITH_TIMEOUT(!model.second(QStringLiteral("TGP")).isEmpty() && table->sync().pending() == 0,
+                                 kTimeoutMs);
+        QCOMPARE(model.value(QStringLiteral("TGP")), QStringLiteral("16"));
+        QCOMPARE(model.second(QStringLiteral("TGP")), QStringLiteral("16"));
+        QCOMPARE(model.value(QStringLiteral("A")), QStringLiteral("4000")); // stored vs in use while still
+        QCOMPARE(model.second(QStringLiteral("A")), QStringLiteral("0"));
+        QVERIFY(model.indexOf(QStringLiteral("A"), app::VariableModel::Second).data(Qt::BackgroundRole).isValid());
+        QCOMPARE(model.value(QStringLiteral("THI")), QStringLiteral("="));
+        QVERIFY(!table->sync().isLive()); // read when asked: each read is a command on the user's queue
 
-        QVERIFY(!table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("300"))); // the catalog's limit
-        QVERIFY(table->message().contains(QStringLiteral("0 \u2013 255")));
+        QVERIFY(!table->editValue(QStringLiteral("TGP"), QStringLiteral("300"))); // the catalog's limit
+        QVERIFY2(table->statusText().contains(QStringLiteral("0 \u2013 255")), qPrintable(table->statusText()));
 
-        QSignalSpy written(table, &app::Pmc960ParameterDock::writeFinished);
-        QVERIFY(table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("20")));
+        QSignalSpy written(table, &app::VariableBrowser::written);
+        QVERIFY(table->editValue(QStringLiteral("TGP"), QStringLiteral("20")));
         QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, kTimeoutMs);
         QVERIFY(written.at(0).at(1).toBool());
-        QTRY_COMPARE_WITH_TIMEOUT(table->stored(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
-        QTRY_COMPARE_WITH_TIMEOUT(table->inUse(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(model.value(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(model.second(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
 
         // The controller's own refusal: TGF 200 overflows the 384 kHz range (#9C).
-        QVERIFY(table->setStoredValue(QStringLiteral("TGF"), QStringLiteral("200")));
+        QVERIFY(table->editValue(QStringLiteral("TGF"), QStringLiteral("200")));
         QTRY_COMPARE_WITH_TIMEOUT(written.count(), 2, kTimeoutMs);
         QVERIFY(!written.at(1).at(1).toBool());
-        QVERIFY2(table->message().contains(QStringLiteral("#9C")), qPrintable(table->message()));
-        QTRY_COMPARE_WITH_TIMEOUT(table->stored(QStringLiteral("TGF")), QStringLiteral("16"), kTimeoutMs);
+        QVERIFY2(table->statusText().contains(QStringLiteral("#9C")), qPrintable(table->statusText()));
+        QTRY_COMPARE_WITH_TIMEOUT(model.value(QStringLiteral("TGF")), QStringLiteral("16"), kTimeoutMs);
 
         // It is the family's variable browser: titled so, and searchable by name or description.
-        QVERIFY(table->windowTitle().startsWith(QStringLiteral("Variables")));
+        QVERIFY(ws.parameterDock()->windowTitle().startsWith(QStringLiteral("Variables")));
+        const QAbstractItemModel& shown = *table->allView()->model();
+        const auto shownNames = [&shown] {
+            QStringList names;
+            for (int g = 0; g < shown.rowCount(); ++g)
+                for (int r = 0; r < shown.rowCount(shown.index(g, 0)); ++r)
+                    names << shown.index(r, 0, shown.index(g, 0)).data(app::VariableModel::NameRole).toString();
+            return names;
+        };
         table->setFilter(QStringLiteral("gain"));
-        QVERIFY(table->visibleRows() > 0 && table->visibleRows() < table->table()->rowCount());
-        QVERIFY(!table->table()->isRowHidden(table->rowOf(QStringLiteral("TGP")))); // "position loop gain"
-        QVERIFY(table->table()->isRowHidden(table->rowOf(QStringLiteral("SF"))));
+        QVERIFY(shownNames().contains(QStringLiteral("TGP"))); // "position loop gain"
+        QVERIFY(!shownNames().contains(QStringLiteral("SF")));
         table->setFilter(QString());
-        QCOMPARE(table->visibleRows(), table->table()->rowCount());
+        QCOMPARE(shownNames().size(), model.variableCount());
     }
 
     void mplFilesGetMplHighlightingAndHelp() {

@@ -11,7 +11,9 @@
 #include "errors/error_log_model.h"
 #include "editor/program_editor.h"
 #include "editor/mpl_language.h"
-#include "families/pmc960/pmc960_parameter_dock.h"
+#include "variables/variable_browser.h"
+#include "variables/variable_model.h"
+#include "variables/variable_sync.h"
 #include "families/pmc960/pmc960_program_transfer.h"
 #include "families/pmc960/pmc960_status_dock.h"
 #include "families/pmc960/pmc960_workspace.h"
@@ -19,6 +21,7 @@
 #include "scope/watch_view.h"
 #include "serialport/simulator_link.h"
 
+#include <QDockWidget>
 #include <QPointer>
 #include <QTimer>
 
@@ -69,7 +72,7 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                      .ready = [&window] {
                          Pmc960Workspace* ws = pmc960(window);
                          return ws->session() && ws->session()->state() == serialport::Pmc960Session::State::Ready &&
-                                ws->parameterDock()->pendingReads() == 0;
+                                ws->parameterBrowser()->sync().pending() == 0;
                      }});
     steps.push_back({.name = QStringLiteral("pmc960-download"),
                      .act = [&window, demo] { pmc960(window)->transfer().download(*demo); },
@@ -123,19 +126,21 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                  });
     steps.push_back({.name = QStringLiteral("pmc960-parameters"),
                      .act = [&window] {
-                         Pmc960ParameterDock* table = pmc960(window)->parameterDock();
+                         QDockWidget* table = pmc960(window)->parameterDock();
                          table->setFloating(true); // before show(): docked first, it would grow the main window
                          table->show();
-                         table->resize(760, 600);
-                         table->setStoredValue(QStringLiteral("TGP"), QStringLiteral("24"));
+                         table->resize(900, 600);
+                         pmc960(window)->parameterBrowser()->reveal(QStringLiteral("TGP"));
+                         pmc960(window)->parameterBrowser()->editValue(QStringLiteral("TGP"), QStringLiteral("24"));
                      },
                      .ready = [&window] {
-                         Pmc960ParameterDock* table = pmc960(window)->parameterDock();
-                         return table->pendingReads() == 0 && table->stored(QStringLiteral("TGP")) == QLatin1String("24");
+                         const VariableBrowser* browser = pmc960(window)->parameterBrowser();
+                         return browser->sync().pending() == 0 &&
+                                browser->model().second(QStringLiteral("TGP")) == QLatin1String("24");
                      },
                      .grab = [&window] { return TourShot::of(pmc960(window)->parameterDock()); },
                      .cleanUp = [&window] {
-                         Pmc960ParameterDock* table = pmc960(window)->parameterDock();
+                         QDockWidget* table = pmc960(window)->parameterDock();
                          table->hide(); // hidden first: docked while shown, it would grow the main window
                          table->setFloating(false);
                      }});

@@ -3,7 +3,6 @@
 
 #include "tuning/family_tuning_panel.h"
 
-#include "pmc960_parameter_dock.h"
 #include "pmc960_program_transfer.h"
 #include "pmc960_routine_runner.h"
 #include "pmc960_status_dock.h"
@@ -14,7 +13,9 @@
 #include "resources/resources.h"
 #include "scope/session_watch_source.h"
 #include "scope/watch_view.h"
+#include "variables/variable_browser.h"
 
+#include <QDockWidget>
 #include <QMenu>
 #include <QStyle>
 
@@ -26,9 +27,14 @@ constexpr char kEsc = '\x1b';
 
 Pmc960Workspace::Pmc960Workspace(MainWindow& mainWindow)
     : SessionWorkspace(mainWindow, drive_core::DriveFamily::Pmc960), m_transfer(new Pmc960ProgramTransfer(*this)),
-      m_status(new Pmc960StatusDock(&mainWindow)), m_parameters(new Pmc960ParameterDock(&mainWindow)),
+      m_status(new Pmc960StatusDock(&mainWindow)),
+      m_parameters(new QDockWidget(tr("Variables \u2014 PMC-960 Parameter Table"), &mainWindow)),
+      m_parameterBrowser(new VariableBrowser(SessionHost::of(*this), m_parameters)),
       m_menu(new QMenu(tr("&MPL"), &mainWindow)), m_errors(new Pmc960ErrorSource(*this)),
       m_runner(new Pmc960RoutineRunner(*this)) {
+    // The PMC-960's variable browser is its parameter table: the dock carries the family's "Variables" title.
+    m_parameters->setObjectName(QStringLiteral("pmc960ParameterDock"));
+    m_parameters->setWidget(m_parameterBrowser);
     m_menu->setObjectName(QStringLiteral("mplMenu"));
     QAction* download = m_menu->addAction(tr("&Download Program"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
                                           [this] { m_transfer->download(window().editor()); });
@@ -57,7 +63,6 @@ Pmc960Workspace::Pmc960Workspace(MainWindow& mainWindow)
     connect(m_runner, &Pmc960RoutineRunner::programFailed, m_errors, &Pmc960ErrorSource::addProgramError);
     connect(m_transfer, &Pmc960ProgramTransfer::busyChanged, this, [this](bool busy) {
         m_status->setPaused(busy);
-        m_parameters->setPaused(busy);
         updateActions();
         emit busyChanged(busy);
     });
@@ -72,7 +77,6 @@ Pmc960Workspace::~Pmc960Workspace() {
         m_session->disconnect(m_runner);
     }
     m_status->setSession(nullptr);
-    m_parameters->setSession(nullptr);
     releaseLink();
 }
 
@@ -134,14 +138,13 @@ bool Pmc960Workspace::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
 void Pmc960Workspace::sessionOpened() {
     // (After a lost connection too: the session asks for the prompt again, the docks poll again.)
     m_status->setSession(m_session);
-    m_parameters->setSession(m_session);
+    m_parameterBrowser->readAll(); // every parameter's stored and in-use value, once
     // The first connection shows the status panel, so the user sees the controller at once.
     if (!m_status->isVisible()) m_status->show();
 }
 
 void Pmc960Workspace::sessionClosed() {
     m_status->setSession(nullptr);
-    m_parameters->setSession(nullptr);
     m_runner->reset();
 }
 

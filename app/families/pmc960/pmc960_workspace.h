@@ -14,7 +14,7 @@ namespace app {
 
 class MainWindow;
 class Pmc960ErrorSource;
-class Pmc960ParameterDock;
+class VariableBrowser;
 class Pmc960ProgramTransfer;
 class Pmc960RoutineRunner;
 class Pmc960RunDialog;
@@ -42,7 +42,8 @@ public:
     Pmc960ProgramTransfer& transfer() const { return *m_transfer; }
     Pmc960RoutineRunner& runner() const { return *m_runner; }
     Pmc960StatusDock* statusDock() const { return m_status; }
-    Pmc960ParameterDock* parameterDock() const { return m_parameters; }
+    QDockWidget* parameterDock() const { return m_parameters; }
+    VariableBrowser* parameterBrowser() const { return m_parameterBrowser; }
     QMenu* menu() const { return m_menu; }
     // Every MPL menu action by its text without '&' and "...": "Download Program", "Stop".
     QAction* action(const QString& text) const;
@@ -68,7 +69,8 @@ private:
     serialport::Pmc960Session* m_session = nullptr; // the family's own session inside the DriveSession
     Pmc960ProgramTransfer* m_transfer;
     Pmc960StatusDock* m_status;
-    Pmc960ParameterDock* m_parameters;
+    QDockWidget* m_parameters;
+    VariableBrowser* m_parameterBrowser;
     QMenu* m_menu;
     Pmc960ErrorSource* m_errors;
     Pmc960RoutineRunner* m_runner;
