@@ -215,21 +215,31 @@ void VariableModel::setValue(const QString& name, const QString& printed) {
     }
 }
 
-void VariableModel::setSecond(const QString& name, const QString& printed) {
+const VariableModel::Row* VariableModel::find(const QString& name) const {
     const auto it = m_byName.constFind(name.toUpper());
-    if (it == m_byName.constEnd() || m_rows[std::size_t(*it)].second == printed) return;
-    m_rows[std::size_t(*it)].second = printed;
+    return it == m_byName.constEnd() ? nullptr : &m_rows[std::size_t(*it)];
+}
+
+template <class T>
+void VariableModel::setField(const QString& name, T Row::*field, const T& to) {
+    const auto it = m_byName.constFind(name.toUpper());
+    if (it == m_byName.constEnd() || m_rows[std::size_t(*it)].*field == to) return;
+    m_rows[std::size_t(*it)].*field = to;
     rowChanged(*it);
 }
 
+void VariableModel::setSecond(const QString& name, const QString& printed) {
+    setField(name, &Row::second, printed);
+}
+
 QString VariableModel::second(const QString& name) const {
-    const auto it = m_byName.constFind(name.toUpper());
-    return it == m_byName.constEnd() ? QString() : m_rows[std::size_t(*it)].second;
+    const Row* row = find(name);
+    return row ? row->second : QString();
 }
 
 QString VariableModel::value(const QString& name) const {
-    const auto it = m_byName.constFind(name.toUpper());
-    return it == m_byName.constEnd() ? QString() : m_rows[std::size_t(*it)].value;
+    const Row* row = find(name);
+    return row ? row->value : QString();
 }
 
 std::optional<double> VariableModel::number(const QString& name) const {
@@ -239,8 +249,8 @@ std::optional<double> VariableModel::number(const QString& name) const {
 }
 
 bool VariableModel::isChanged(const QString& name) const {
-    const auto it = m_byName.constFind(name.toUpper());
-    return it != m_byName.constEnd() && m_rows[std::size_t(*it)].changed;
+    const Row* row = find(name);
+    return row && row->changed;
 }
 
 void VariableModel::clearChanged() {
@@ -252,27 +262,21 @@ void VariableModel::clearChanged() {
 }
 
 void VariableModel::setUnreadable(const QString& name) {
-    const auto it = m_byName.constFind(name.toUpper());
-    if (it == m_byName.constEnd()) return;
-    m_rows[std::size_t(*it)].readable = false;
-    rowChanged(*it);
+    setField(name, &Row::readable, false);
 }
 
 bool VariableModel::isReadable(const QString& name) const {
-    const auto it = m_byName.constFind(name.toUpper());
-    return it != m_byName.constEnd() && m_rows[std::size_t(*it)].readable;
+    const Row* row = find(name);
+    return row && row->readable;
 }
 
 void VariableModel::setPinned(const QString& name, bool pinned) {
-    const auto it = m_byName.constFind(name.toUpper());
-    if (it == m_byName.constEnd() || m_rows[std::size_t(*it)].pinned == pinned) return;
-    m_rows[std::size_t(*it)].pinned = pinned;
-    rowChanged(*it);
+    setField(name, &Row::pinned, pinned);
 }
 
 bool VariableModel::isPinned(const QString& name) const {
-    const auto it = m_byName.constFind(name.toUpper());
-    return it != m_byName.constEnd() && m_rows[std::size_t(*it)].pinned;
+    const Row* row = find(name);
+    return row && row->pinned;
 }
 
 QStringList VariableModel::pinned() const {

@@ -81,6 +81,10 @@ private:
         std::vector<int> rows; // into m_rows
     };
 
+    const Row* find(const QString& name) const; // nullptr if unknown
+    // Sets one field of a row and says so, when the row exists and the field changes.
+    template <class T>
+    void setField(const QString& name, T Row::*field, const T& to);
     QVariant rowData(const Row& row, int column, int role) const;
     QString displayValue(const Row& row) const;
     void rowChanged(int rowIndex);
