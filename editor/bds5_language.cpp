@@ -5,6 +5,7 @@
 #include "bds5_completion.h"
 #include "bds5_diagnostics.h"
 #include "bds5_help.h"
+#include "bds5_outline.h"
 #include "help_popup.h"
 #include "program_editor.h"
 
@@ -34,7 +35,7 @@ Bds5Language::Bds5Language(ProgramEditor& editor)
     : LanguageSupport(
           editor,
           {&bds5TopicAt, &bds5HelpHtml, tr("<b>%1</b> &nbsp;is not a BDS5 command, variable or error number."), true},
-          true),
+          {&bds5Outline, tr("No labels (10$) or tasks (POWER-UP$, A$ \u2026) in this program yet.")}, true),
       m_lexer(new Bds5Lexer), m_diagnostics(nullptr) {
     m_editor.setLanguageLexer(m_lexer);
     m_editor.setFolding(QsciScintilla::BoxedTreeFoldStyle, kFoldMargin);

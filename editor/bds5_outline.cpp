@@ -28,8 +28,8 @@ QString roleOf(dbds5::DedicatedLabel which) {
 
 } // namespace
 
-std::vector<Bds5OutlineEntry> bds5Outline(const QString& programText) {
-    std::vector<Bds5OutlineEntry> out;
+Outline bds5Outline(const QString& programText) {
+    Outline out;
     const QStringList lines = programText.split(QLatin1Char('\n'));
     for (qsizetype n = 0; n < lines.size(); ++n) {
         const QString& text = lines[n];
@@ -41,17 +41,17 @@ std::vector<Bds5OutlineEntry> bds5Outline(const QString& programText) {
         const auto lexed = dbds5::lexLine(std::string_view(utf8.constData(), std::size_t(utf8.size())));
         const auto* line = std::get_if<dbds5::LexedLine>(&lexed);
         if (!line || line->entries.empty()) continue;
-        Bds5OutlineEntry entry;
+        OutlineEntry entry;
         entry.line = int(n);
         entry.name = QString::fromStdString(line->entries.front().text);
         const QString comment = QString::fromStdString(line->comment).trimmed();
         if (dbds5::Bds5Program::numericLabel(*line)) {
-            entry.kind = Bds5OutlineEntry::Kind::Label;
+            entry.kind = OutlineEntry::Kind::Label;
             entry.detail = comment;
         } else if (const auto which = dbds5::Bds5Program::dedicatedLabel(*line)) {
             const bool alarm = *which == dbds5::DedicatedLabel::AlarmA || *which == dbds5::DedicatedLabel::AlarmB ||
                                *which == dbds5::DedicatedLabel::AlarmC;
-            entry.kind = alarm ? Bds5OutlineEntry::Kind::Alarm : Bds5OutlineEntry::Kind::Task;
+            entry.kind = alarm ? OutlineEntry::Kind::Handler : OutlineEntry::Kind::Task;
             if (alarm) {
                 QStringList rest;
                 for (std::size_t i = 1; i < line->entries.size(); ++i)

@@ -3,20 +3,12 @@
 // drive's own line lexer. Pure; any thread.
 #pragma once
 
-#include <QString>
-
-#include <vector>
+#include "outline.h"
 
 namespace editor {
 
-struct Bds5OutlineEntry {
-    enum class Kind { Label, Task, Alarm };
-    int line = 0; // 0-based editor line
-    Kind kind = Kind::Label;
-    QString name;   // "10$", "POWER-UP$", "A$"
-    QString detail; // the alarm's switch and state ("I1 ON"), else the label line's comment, else the task's role
-};
-
-std::vector<Bds5OutlineEntry> bds5Outline(const QString& programText);
+// Labels (Kind::Label), dedicated task labels (Task) and alarm tasks A$/B$/C$ (Handler). The detail is
+// the alarm's switch and state ("I1 ON"), else the label line's comment, else the task's role.
+Outline bds5Outline(const QString& programText);
 
 } // namespace editor

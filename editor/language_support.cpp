@@ -19,8 +19,9 @@ bool isCompletionKey(const QKeyEvent* e) {
 }
 } // namespace
 
-LanguageSupport::LanguageSupport(ProgramEditor& editor, Help help, bool completes)
-    : QObject(&editor), m_editor(editor), m_source(std::move(help)), m_completes(completes),
+LanguageSupport::LanguageSupport(ProgramEditor& editor, Help help, Outlining outline, bool completes)
+    : QObject(&editor), m_editor(editor), m_source(std::move(help)), m_outline(std::move(outline)),
+      m_completes(completes),
       m_help(new HelpPopup(&editor)) {
     // Moving the cursor closes the help (a re-layout that reports the same position does not).
     connect(&m_editor, &QsciScintilla::cursorPositionChanged, this, [this] {

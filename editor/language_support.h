@@ -4,6 +4,7 @@
 // as data and, when it completes names, its completion list. Owned by the editor; GUI thread only.
 #pragma once
 
+#include "outline.h"
 #include "program_editor.h"
 
 #include <QObject>
@@ -24,7 +25,19 @@ public:
         bool opensReference = false; // a known topic also goes out as ProgramEditor::helpRequested
     };
 
+    // A language's outline (the Outline dock, Go to label): how it finds its labels and entry points, and
+    // what the dock says when a program has none ("No routines (@ lines) in this program yet").
+    struct Outlining {
+        OutlineOf of = nullptr;
+        QString none;
+    };
+
+    // The language installed in editor (whichever it is), or nullptr for plain text.
+    static LanguageSupport* of(const QsciScintilla* editor) { return find<LanguageSupport>(editor); }
+
     HelpPopup* helpPopup() const { return m_help; }
+    Outline outline(const QString& programText) const { return m_outline.of(programText); }
+    const QString& noOutline() const { return m_outline.none; }
 
     // The help topic under (or just before) the cursor; empty when none.
     QString topicAtCursor() const;
@@ -37,7 +50,7 @@ public:
 
 protected:
     // completes: the language has a completion list, so Ctrl+Space is the editor's.
-    LanguageSupport(ProgramEditor& editor, Help help, bool completes);
+    LanguageSupport(ProgramEditor& editor, Help help, Outlining outline, bool completes);
 
     // The support of type L installed in editor, or nullptr.
     template <class L> static L* find(const QsciScintilla* editor) {
@@ -68,6 +81,7 @@ protected:
 
 private:
     Help m_source;
+    Outlining m_outline;
     bool m_completes;
     HelpPopup* m_help;
     long m_helpPosition = -1; // where the cursor was when the help opened

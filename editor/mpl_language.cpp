@@ -5,6 +5,7 @@
 #include "mpl_help.h"
 #include "mpl_lexer.h"
 #include "mpl_line_styler.h"
+#include "mpl_outline.h"
 #include "program_editor.h"
 
 #include <Qsci/qscistyle.h>
@@ -23,7 +24,7 @@ MplLanguage::MplLanguage(ProgramEditor& editor)
     : LanguageSupport(
           editor,
           {&mplTopicAt, &mplHelpHtml, tr("<b>%1</b> &nbsp;is not an MPL command, parameter or error code."), false},
-          false),
+          {&mplOutline, tr("No routines (@<label> lines) in this program yet.")}, false),
       m_lexer(new MplLexer) {
     m_editor.setLanguageLexer(m_lexer);
     m_lexer->applyStyles(m_editor.font());

@@ -2,10 +2,13 @@
 // and the entry whose section holds the cursor stays selected.
 #include "outline_view.h"
 
+#include "language_support.h"
+
 #include <Qsci/qsciscintilla.h>
 
 #include <QHeaderView>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -17,7 +20,7 @@ constexpr int kLineRole = Qt::UserRole + 1;
 }
 
 OutlineView::OutlineView(QWidget* parent)
-    : QWidget(parent), m_filter(new QLineEdit(this)), m_tree(new QTreeWidget(this)) {
+    : QWidget(parent), m_filter(new QLineEdit(this)), m_tree(new QTreeWidget(this)), m_empty(new QLabel(this)) {
     setObjectName(QStringLiteral("outlineView"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -36,6 +39,11 @@ OutlineView::OutlineView(QWidget* parent)
     m_tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     layout->addWidget(m_tree);
+    m_empty->setObjectName(QStringLiteral("outlineEmptyNote"));
+    m_empty->setWordWrap(true);
+    m_empty->setForegroundRole(QPalette::PlaceholderText);
+    m_empty->hide();
+    layout->addWidget(m_empty);
 
     m_timer.setSingleShot(true);
     m_timer.setInterval(kRefreshMs);
@@ -56,9 +64,16 @@ void OutlineView::setEditor(QsciScintilla* editor) {
     if (editor == m_editor) return;
     disconnect(m_textConnection);
     disconnect(m_cursorConnection);
+    if (m_editor) m_editor->removeEventFilter(this);
     m_editor = editor;
     if (editor) {
-        m_textConnection = connect(editor, &QsciScintilla::textChanged, &m_timer, qOverload<>(&QTimer::start));
+        editor->installEventFilter(this); // a language installed or taken out later: see eventFilter
+        // Lines added or removed move every entry below them: the list is rebuilt at once, so it never shows
+        // a wrong line. Other edits wait for the pause in typing.
+        m_textConnection = connect(editor, &QsciScintilla::textChanged, this, [this] {
+            if (m_editor && m_editor->lines() != m_lineCount) refresh();
+            else m_timer.start();
+        });
         m_cursorConnection = connect(editor, &QsciScintilla::cursorPositionChanged, this, &OutlineView::followCursor);
     }
     refresh();
@@ -66,14 +81,20 @@ void OutlineView::setEditor(QsciScintilla* editor) {
 
 void OutlineView::refresh() {
     m_timer.stop();
-    m_entries = m_editor ? bds5Outline(m_editor->text()) : std::vector<Bds5OutlineEntry>{};
+    m_lineCount = m_editor ? m_editor->lines() : 0;
+    const LanguageSupport* language = LanguageSupport::of(m_editor);
+    m_entries = language ? language->outline(m_editor->text()) : Outline{};
+    m_empty->setText(!m_editor   ? tr("No program is open.")
+                     : language ? language->noOutline()
+                                : tr("Plain text has no outline: labels are listed for a drive program."));
+    m_empty->setVisible(m_entries.empty());
     m_tree->clear();
     QList<QTreeWidgetItem*> items;
-    for (const Bds5OutlineEntry& e : m_entries) {
+    for (const OutlineEntry& e : m_entries) {
         auto* item = new QTreeWidgetItem({e.name, QString::number(e.line + 1), e.detail});
         item->setData(0, kLineRole, e.line);
         item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
-        if (e.kind != Bds5OutlineEntry::Kind::Label) {
+        if (e.kind != OutlineEntry::Kind::Label) {
             QFont bold = item->font(0);
             bold.setBold(true);
             item->setFont(0, bold);
@@ -136,6 +157,12 @@ void OutlineView::followCursor() {
 }
 
 bool OutlineView::eventFilter(QObject* watched, QEvent* event) {
+    // A language is a child of its editor: one installed (or taken out) after setEditor changes the outline.
+    // At ChildAdded the child is still being built, so any new or removed child asks for a refresh.
+    if (watched == m_editor && (event->type() == QEvent::ChildAdded || event->type() == QEvent::ChildRemoved)) {
+        m_timer.start();
+        return false;
+    }
     if (watched == m_filter && event->type() == QEvent::KeyPress) {
         const auto* key = static_cast<QKeyEvent*>(event);
         if (key->key() == Qt::Key_Escape && m_editor) {

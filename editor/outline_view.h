@@ -1,14 +1,18 @@
-// OutlineView: the "Outline" dock's content — the labels and tasks of the program in the current editor,
-// with a filter field that doubles as "Go to label" (type, Enter jumps). Follows whichever editor
-// setEditor() names (the composition root calls it when the current tab changes). GUI thread only.
+// OutlineView: the "Outline" dock's content — the labels and entry points of the program in the current
+// editor, found by the language installed in it (LanguageSupport::outline: BDS5, MPL or ServoBASIC), with a
+// filter field that doubles as "Go to label" (type, Enter jumps). When there is nothing to list, a line
+// says why (plain text, or a program without labels). Follows whichever editor setEditor() names (the
+// composition root calls it when the current tab changes) and the language installed in it later.
+// GUI thread only.
 #pragma once
 
-#include "bds5_outline.h"
+#include "outline.h"
 
 #include <QPointer>
 #include <QTimer>
 #include <QWidget>
 
+class QLabel;
 class QLineEdit;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -19,7 +23,7 @@ namespace editor {
 class OutlineView final : public QWidget {
     Q_OBJECT
 public:
-    static constexpr int kRefreshMs = 300; // after the last change of the text
+    static constexpr int kRefreshMs = 300; // after the last change of the text that kept its line count
 
     explicit OutlineView(QWidget* parent = nullptr);
 
@@ -32,9 +36,11 @@ public:
     // Moves the editor's cursor to the label's line and gives it focus. False if no entry is named so.
     bool jumpTo(const QString& labelName);
 
-    const std::vector<Bds5OutlineEntry>& entries() const { return m_entries; }
+    const Outline& entries() const { return m_entries; }
     QTreeWidget* tree() const { return m_tree; }
     QLineEdit* filterField() const { return m_filter; }
+    // Why the list is empty ("Plain text has no outline."); hidden while it lists something.
+    QLabel* emptyNote() const { return m_empty; }
 
     // Rebuilds from the editor's text now (normally on a timer after edits).
     void refresh();
@@ -52,8 +58,10 @@ private:
     QMetaObject::Connection m_cursorConnection;
     QLineEdit* m_filter;
     QTreeWidget* m_tree;
+    QLabel* m_empty;
     QTimer m_timer;
-    std::vector<Bds5OutlineEntry> m_entries;
+    Outline m_entries;
+    int m_lineCount = 0; // the editor's lines when the list was built
 };
 
 } // namespace editor

@@ -5,6 +5,7 @@
 #include "program_editor.h"
 #include "servobasic_help.h"
 #include "servobasic_lexer.h"
+#include "servobasic_outline.h"
 
 #include <QStringList>
 
@@ -15,6 +16,7 @@ ServoBasicLanguage::ServoBasicLanguage(ProgramEditor& editor)
                       {&servoBasicTopicAt, &servoBasicHelpHtml,
                        tr("<b>%1</b> &nbsp;is not a ServoBASIC Plus statement, function or predefined variable."),
                        false},
+                      {&servoBasicOutline, tr("No labels (Name:), SUBs or INTERRUPT routines in this program yet.")},
                       true),
       m_lexer(new ServoBasicLexer) {
     m_editor.setLanguageLexer(m_lexer);

@@ -19,8 +19,8 @@ namespace app {
 
 QList<RunLabelDialog::Label> RunLabelDialog::labelsIn(const QString& programText) {
     QList<Label> labels;
-    for (const editor::Bds5OutlineEntry& entry : editor::bds5Outline(programText)) {
-        if (entry.kind != editor::Bds5OutlineEntry::Kind::Label) continue;
+    for (const editor::OutlineEntry& entry : editor::bds5Outline(programText)) {
+        if (entry.kind != editor::OutlineEntry::Kind::Label) continue;
         const std::optional<int> number = labelOf(entry.name);
         if (number && *number != kRunAlone) labels.append({*number, entry.detail});
     }

@@ -16,6 +16,9 @@ public:
     explicit Parser(std::vector<Token> tokens);
     ProgramAst parse();
 
+    // A reserved word of the language (upper case): never a label, SUB or variable name.
+    static bool isKeyword(const std::string& upper);
+
 private:
     // structure (sc750_parser.cpp)
     void parseParams();
@@ -63,7 +66,6 @@ private:
     void skipBlankLines();
     Where here() const;
     [[noreturn]] void fail(const Token& at, const std::string& message) const;
-    static bool isKeyword(const std::string& upper);
     int symbolIndex(const std::string& upper) const;
 
     std::vector<Token> m_tokens;

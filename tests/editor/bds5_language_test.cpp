@@ -6,6 +6,7 @@
 #include "editor/bds5_help.h"
 #include "editor/bds5_language.h"
 #include "editor/bds5_lexer.h"
+#include "editor/bds5_outline.h"
 #include "editor/help_popup.h"
 #include "editor/outline_view.h"
 #include "editor/program_editor.h"
@@ -223,7 +224,7 @@ private slots:
         QCOMPARE(names,
                  QStringList({"POWER-UP$", "A$", "VARIABLE$", "AUTO$", "MANUAL$", "10$", "BACKGROUND$", "ERROR$"}));
         QCOMPARE(entries[1].detail, QStringLiteral("I7 OFF"));
-        QCOMPARE(entries[1].kind, Bds5OutlineEntry::Kind::Alarm);
+        QCOMPARE(entries[1].kind, OutlineEntry::Kind::Handler);
         QCOMPARE(entries[0].detail, QStringLiteral("POWER-UP LABEL"));
         QCOMPARE(entries[5].line, 22);
 
@@ -242,9 +243,15 @@ private slots:
         int line = -1, index = -1;
         ed.getCursorPosition(&line, &index);
         QCOMPARE(line, 25);
-        // The outline follows edits after its refresh delay.
+        // Lines added or removed: the outline is rebuilt at once, so no entry shows a stale line number.
         ed.setText(QStringLiteral("1$\n2$\n"));
-        QTRY_COMPARE(outline.tree()->topLevelItemCount(), 2);
+        QCOMPARE(outline.tree()->topLevelItemCount(), 2);
+        QCOMPARE(outline.tree()->topLevelItem(1)->text(1), QStringLiteral("2"));
+        // An edit within a line: after the pause in typing.
+        ed.setSelection(1, 0, 1, 1);
+        ed.replaceSelectedText(QStringLiteral("3"));
+        QCOMPARE(outline.tree()->topLevelItem(1)->text(0), QStringLiteral("2$"));
+        QTRY_COMPARE(outline.tree()->topLevelItem(1)->text(0), QStringLiteral("3$"));
     }
 
     void helpExplainsVariablesCommandsAndErrors() {

@@ -1,7 +1,7 @@
 // Pmc960RunDialog: the routine list, the servo note and its SM2 check box.
 #include "pmc960_run_dialog.h"
 
-#include "drive_core/pmc960/pmc960_program.h"
+#include "editor/mpl_outline.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -12,32 +12,16 @@
 
 namespace app {
 
-namespace {
-bool isBlank(QChar c) {
-    return c == QLatin1Char(' ') || c == QLatin1Char('\t');
-}
-} // namespace
-
 QList<Pmc960RunDialog::Routine> Pmc960RunDialog::routinesIn(const QString& programText) {
     QString normal = programText;
     normal.replace(QStringLiteral("\r\n"), QStringLiteral("\n")).replace(QLatin1Char('\r'), QLatin1Char('\n'));
     QList<Routine> routines;
     QString seen;
-    for (const QString& line : normal.split(QLatin1Char('\n'))) {
-        qsizetype i = 0;
-        while (i < line.size() && isBlank(line.at(i))) ++i;
-        if (i >= line.size() || line.at(i) != QLatin1Char('@')) continue;
-        ++i;
-        while (i < line.size() && isBlank(line.at(i))) ++i;
-        if (i >= line.size()) continue;
-        const QChar label = line.at(i);
-        if (label == QLatin1Char('.') || label.unicode() > 0x7F ||
-            !drive_core::pmc960::Pmc960Program::validLabel(char(label.unicode())) || seen.contains(label))
-            continue;
+    for (const editor::OutlineEntry& entry : editor::mplOutline(normal)) {
+        const QChar label = entry.name.at(0);
+        if (seen.contains(label)) continue; // never reached: the label search stops at the first
         seen += label;
-        QString description = line.mid(i + 1);
-        description.replace(QLatin1Char('_'), QLatin1Char(' '));
-        routines.append({label, description.simplified()});
+        routines.append({label, entry.detail});
     }
     return routines;
 }

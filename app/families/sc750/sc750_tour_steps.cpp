@@ -6,7 +6,6 @@
 #include "main_window.h"
 #include "terminal_dock.h"
 
-#include "editor/outline_dock.h"
 #include "editor/program_editor.h"
 #include "families/sc750/sc750_controller_menu.h"
 #include "families/sc750/sc750_debugger.h"
@@ -73,12 +72,9 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
     std::vector<ScreenshotTour::Step> steps;
     if (!sc750(window)) return steps;
     auto demo = std::make_shared<QPointer<editor::ProgramEditor>>();
-    auto outlineShown = std::make_shared<bool>(false);
     steps.push_back({.name = QStringLiteral("sc750-connect"),
-                     .act = [&window, demo, outlineShown] {
+                     .act = [&window, demo] {
                          window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Sc750));
-                         *outlineShown = window.outlineDock()->isVisible();
-                         window.outlineDock()->hide(); // the BDS5 outline has nothing to say about ServoBASIC
                          EditorTabs* tabs = window.editorArea()->tabs();
                          *demo = tabs->addEditor(QStringLiteral("index.bas"));
                          (*demo)->setText(QString::fromLatin1(kDemo));
@@ -217,12 +213,11 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      },
                      .ready = [&window] { return !sc750(window)->debugger().lastError().isEmpty(); },
                      .grab = [&window] { return TourShot::of(&window); },
-                     .cleanUp = [&window, demo, outlineShown] {
+                     .cleanUp = [&window, demo] {
                          sc750(window)->debugger().reset();
                          sc750(window)->outputDock()->hide();
                          if (*demo) (*demo)->setModified(false);
                          window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
-                         window.outlineDock()->setVisible(*outlineShown);
                      }});
     return steps;
 }
