@@ -50,8 +50,9 @@ VariableBrowser::VariableBrowser(SessionHost host, QWidget* parent)
     m_live->setToolTip(tr("Read the values in view from the drive again and again, paced to the link"));
     m_refresh = new QPushButton(tr("&Refresh"), this);
     m_refresh->setToolTip(tr("Read the values in view and the watch list once, now"));
-    m_copy = new QPushButton(tr("Copy as .VAR"), this);
-    m_copy->setVisible(host.family == drive_core::DriveFamily::Bds5); // Motion Link's variable file
+    m_copy = new QPushButton(tr("Copy as %1").arg(m_model->rules().fileKind()), this);
+    m_copy->setToolTip(tr("The selected variables (or the Watch list) as the drive's %1, which Send takes back")
+                           .arg(m_model->rules().fileKind()));
     bar->addWidget(m_search, 1);
     bar->addWidget(m_live);
     bar->addWidget(m_refresh);
@@ -74,7 +75,7 @@ VariableBrowser::VariableBrowser(SessionHost host, QWidget* parent)
 
     connect(m_search, &QLineEdit::textChanged, this, &VariableBrowser::setFilter);
     connect(m_live, &QCheckBox::toggled, m_sync, &VariableSync::setLive);
-    connect(m_copy, &QPushButton::clicked, this, &VariableBrowser::copyAsVar);
+    connect(m_copy, &QPushButton::clicked, this, &VariableBrowser::copyAsFile);
     connect(m_refresh, &QPushButton::clicked, this, &VariableBrowser::refresh);
     connect(m_model, &VariableModel::editRequested, m_sync, &VariableSync::write);
     connect(m_model, &VariableModel::editRefused, this,
@@ -175,26 +176,29 @@ void VariableBrowser::showContextMenu(QTreeView* view, const QPoint& at) {
         menu.addAction(tr("Edit %1").arg(name), this,
                        [view, at] { view->edit(view->indexAt(at).siblingAtColumn(VariableModel::Value)); });
     }
-    if (m_copy->isVisibleTo(this)) menu.addAction(tr("Copy as .VAR"), this, &VariableBrowser::copyAsVar);
+    menu.addAction(m_copy->text(), this, &VariableBrowser::copyAsFile);
     menu.exec(view->viewport()->mapToGlobal(at));
 }
 
-QString VariableBrowser::selectionAsVar() const {
+VariableRules::FileText VariableBrowser::selectionAsFile() const {
     auto* view = qobject_cast<QTreeView*>(m_tabs->currentWidget());
     QStringList names;
     if (view)
         for (const QModelIndex& index : view->selectionModel()->selectedRows())
             if (const QString name = index.data(VariableModel::NameRole).toString(); !name.isEmpty()) names << name;
     if (names.isEmpty()) names = m_model->pinned();
-    return m_model->varLines(names);
+    return m_model->rules().fileText(m_model->namedValues(names));
 }
 
-void VariableBrowser::copyAsVar() {
-    const QString lines = selectionAsVar();
-    QApplication::clipboard()->setText(lines);
-    setStatus(lines.isEmpty() ? tr("Nothing to copy: select variables that have a value")
-                              : tr("Copied %n line(s) as .VAR", nullptr, int(lines.count(QLatin1Char('\n')))),
-              false);
+void VariableBrowser::copyAsFile() {
+    const VariableRules::FileText file = selectionAsFile();
+    const QString kind = m_model->rules().fileKind();
+    if (file.count == 0) {
+        setStatus(tr("Nothing to copy: select variables that have a value and belong in a %1").arg(kind), true);
+        return;
+    }
+    QApplication::clipboard()->setText(file.text);
+    setStatus(tr("Copied %n value(s) as %1", nullptr, file.count).arg(kind), false);
 }
 
 bool VariableBrowser::editValue(const QString& name, const QString& text) {

@@ -1,11 +1,13 @@
 // VariableBrowser: the variable browser of every family — the catalog grouped (VariableModel), live values
 // for the rows in view (VariableSync), edit in place (checked by the family's rules, then sent; the drive's
-// refusal shown), search, a pinned watch list and changed values highlighted; for the BDS5 "Copy as .VAR".
+// refusal shown), search, a pinned watch list and changed values highlighted, and Copy as the family's own
+// variable file (.VAR, .PRM, the PMC-960's MPL lines).
 // Polls only while visible. The BDS5's Variables dock holds one; the SC750's Variables dock has one as its
 // All Variables tab. GUI thread.
 #pragma once
 
 #include "session_host.h"
+#include "variable_rules.h"
 
 #include <QWidget>
 
@@ -32,6 +34,7 @@ public:
     QTreeView* allView() const { return m_allView; }
     QTreeView* watchView() const { return m_watchView; }
     QLineEdit* searchField() const { return m_search; }
+    QPushButton* copyButton() const { return m_copy; }
     // The last message under the table: an edit's result, a refusal, or the hint.
     QString statusText() const;
     // The value as the drive printed it ("" until read).
@@ -49,8 +52,9 @@ public:
     void refresh();
     void readAll();
     void setFilter(const QString& text);
-    // "NAME value" lines of the selected variables (or of the watch list when nothing is selected).
-    QString selectionAsVar() const;
+    // The family's variable file (VariableRules::fileText: .VAR, .PRM, MPL lines) of the selected variables, or
+    // of the watch list when nothing is selected; what Copy as puts on the clipboard.
+    VariableRules::FileText selectionAsFile() const;
     // A context-menu action that hands a name on (the SC750's "Add to the Variables list"); "" for none.
     void setListAction(const QString& text) { m_listAction = text; }
 
@@ -62,7 +66,7 @@ private:
     QTreeView* makeView(QSortFilterProxyModel* proxy);
     QStringList visibleNames() const;
     void showContextMenu(QTreeView* view, const QPoint& at);
-    void copyAsVar();
+    void copyAsFile();
     void setStatus(const QString& text, bool problem);
 
     VariableModel* m_model;

@@ -286,12 +286,10 @@ QStringList VariableModel::pinned() const {
     return names;
 }
 
-QString VariableModel::varLines(const QStringList& names) const {
-    QString out;
-    for (const QString& name : names) {
-        const QString v = value(name);
-        if (!v.isEmpty()) out += name.toUpper() + QLatin1Char(' ') + v + QLatin1Char('\n');
-    }
+QList<QPair<QString, QString>> VariableModel::namedValues(const QStringList& names) const {
+    QList<QPair<QString, QString>> out;
+    for (const QString& name : names)
+        if (const QString v = value(name); !v.isEmpty()) out.append({name, v});
     return out;
 }
 

@@ -56,7 +56,8 @@ public:
     bool isPinned(const QString& name) const;
     QStringList pinned() const;
     // "NAME value" lines (Motion Link's .VAR) for the given variables that have a value.
-    QString varLines(const QStringList& names) const;
+    // The names that have a value, each with it (Copy as: the rules make the family's file of them).
+    QList<QPair<QString, QString>> namedValues(const QStringList& names) const;
     VariableRules::Context validationContext() const;
     int variableCount() const { return int(m_rows.size()); }
 

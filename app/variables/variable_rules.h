@@ -9,6 +9,8 @@
 #include "serialport/drive_session.h"
 
 #include <QCoreApplication>
+#include <QList>
+#include <QPair>
 #include <QString>
 #include <QStringList>
 
@@ -70,6 +72,16 @@ public:
     virtual QString secondReadLine(const QString&) const { return {}; }
     // Read the rows in view over and over (false: when asked — Refresh, a connection, after a write).
     virtual bool liveByDefault() const { return true; }
+
+    // Copy as: the family's own variable file, which its Send (and `servodesk-cli vars send`) takes back.
+    struct FileText {
+        QString text;
+        int count = 0; // the values it holds; the others cannot go in such a file (a read-only variable)
+    };
+    // What the file is called in "Copy as …": ".VAR", ".PRM", "MPL lines".
+    virtual QString fileKind() const = 0;
+    // The file's text for these names and their values as the browser shows them.
+    virtual FileText fileText(const QList<QPair<QString, QString>>& values) const = 0;
 
     // The generic check of the common schema: read only, a number (integer where it must be), within range.
     static std::optional<QString> schemaProblem(const QString& name, const drive_core::catalog::Parameter& p,

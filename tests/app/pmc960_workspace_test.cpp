@@ -16,6 +16,7 @@
 #include "variables/variable_sync.h"
 
 #include <QDockWidget>
+#include <QPushButton>
 #include <QTreeView>
 #include "families/pmc960/pmc960_program_transfer.h"
 #include "families/pmc960/pmc960_routine_runner.h"
@@ -467,6 +468,17 @@ private slots:
         QVERIFY(written.at(0).at(1).toBool());
         QTRY_COMPARE_WITH_TIMEOUT(model.value(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
         QTRY_COMPARE_WITH_TIMEOUT(model.second(QStringLiteral("TGP")), QStringLiteral("20"), kTimeoutMs);
+
+        // Copy as MPL lines: a T-table value as the line that sets it, between SW1 and SW0 (the parameter file
+        // vars send takes); a system register (SM) is no part of a parameter backup.
+        table->model().setPinned(QStringLiteral("TGP"), true);
+        table->model().setPinned(QStringLiteral("SM"), true);
+        table->showWatchList(true);
+        QCOMPARE(table->copyButton()->text(), QStringLiteral("Copy as MPL lines"));
+        const auto lines = table->selectionAsFile();
+        QCOMPARE(lines.count, 1);
+        QCOMPARE(lines.text, QStringLiteral("SW1\nTGP20\nSW0\n"));
+        table->showWatchList(false);
 
         // The controller's own refusal: TGF 200 overflows the 384 kHz range (#9C).
         QVERIFY(table->editValue(QStringLiteral("TGF"), QStringLiteral("200")));

@@ -13,8 +13,11 @@
 
 #include "drive_core/catalog/sc750_catalog.h"
 #include "editor/program_editor.h"
+#include "serialport/sc750_parameter_file.h"
 #include "serialport/sc750_session.h"
 
+#include <QMap>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -80,6 +83,25 @@ private slots:
         // The set-up parameters are at the top, in view: their power-up values arrive by themselves.
         QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("KVI")), QStringLiteral("5"), kTimeoutMs);
         QTRY_COMPARE_WITH_TIMEOUT(browser->value(QStringLiteral("POLECOUNT")), QStringLiteral("4"), kTimeoutMs);
+
+        // Copy as .PRM: the watch list's set-up parameters as the PARAMS block Edit Parameters reads back; a
+        // run-time variable (POSITION) cannot be in it.
+        for (const char* name : {"KVI", "POSITION", "POLECOUNT"}) browser->model().setPinned(QString::fromLatin1(name), true);
+        browser->showWatchList(true);
+        QTRY_VERIFY_WITH_TIMEOUT(!browser->value(QStringLiteral("POSITION")).isEmpty(), kTimeoutMs);
+        QCOMPARE(browser->copyButton()->text(), QStringLiteral("Copy as .PRM"));
+        const auto prm = browser->selectionAsFile();
+        QCOMPARE(prm.count, 2);
+        const auto parsed = serialport::Sc750ParameterFile::parse(prm.text);
+        QVERIFY(parsed.hasBlock() && parsed.problems().isEmpty());
+        QMap<QString, QString> assigned;
+        for (const auto& a : parsed.assignments()) assigned.insert(a.name, a.value);
+        QCOMPARE(assigned.keys(), QStringList({"KVI", "POLECOUNT"}));
+        QCOMPARE(assigned.value(QStringLiteral("KVI")).toDouble(), 5.0);
+        QCOMPARE(assigned.value(QStringLiteral("POLECOUNT")), QStringLiteral("4"));
+        browser->copyButton()->click();
+        QCOMPARE(browser->statusText(), QStringLiteral("Copied 2 value(s) as .PRM"));
+        browser->showWatchList(false);
 
         // A value written through the browser is what the controller reports, read back with G.
         browser->reveal(QStringLiteral("RUN.SPEED"));

@@ -19,6 +19,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
@@ -158,7 +159,8 @@ private slots:
         dock.model().setPinned(QStringLiteral("X1"), true);
         dock.showWatchList(true);
         QTRY_VERIFY(dock.watchView()->model()->rowCount() == 1);
-        QCOMPARE(dock.selectionAsVar(), QStringLiteral("X1 1234\n"));
+        QCOMPARE(dock.selectionAsFile().text, QStringLiteral("X1 1234\n"));
+        QCOMPARE(dock.copyButton()->text(), QStringLiteral("Copy as .VAR"));
 
         // Live values: the rows in view are read, VMAX among them once it is scrolled to.
         dock.reveal(QStringLiteral("VMAX"));

@@ -84,6 +84,16 @@ QStringList Bds5VariableRules::unreadable(const QStringList& names, const serial
     return out;
 }
 
+// Motion Link's variable file: "NAME value" a line, as the drive's P prints it and VARIABLES > Send takes it.
+VariableRules::FileText Bds5VariableRules::fileText(const QList<QPair<QString, QString>>& values) const {
+    FileText file;
+    for (const auto& [name, value] : values) {
+        file.text += name.toUpper() + QLatin1Char(' ') + value + QLatin1Char('\n');
+        ++file.count;
+    }
+    return file;
+}
+
 QString Bds5VariableRules::hint() const {
     return tr("Double-click a value to change it; it is checked against Appendix E first.");
 }

@@ -22,6 +22,8 @@ public:
     QStringList values(const QStringList& names, const serialport::LineAnswer& answer) const override;
     QStringList unreadable(const QStringList& names, const serialport::LineAnswer& answer) const override;
     QString hint() const override;
+    QString fileKind() const override { return QStringLiteral(".VAR"); }
+    FileText fileText(const QList<QPair<QString, QString>>& values) const override;
 };
 
 } // namespace app

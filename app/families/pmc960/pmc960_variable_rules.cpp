@@ -1,7 +1,10 @@
 // Pmc960VariableRules: ? and ! displays, checked writes.
 #include "pmc960_variable_rules.h"
 
+#include "serialport/pmc960_parameter_file.h"
 #include "serialport/pmc960_parameter_values.h"
+
+#include <algorithm>
 
 namespace app {
 
@@ -65,6 +68,20 @@ QStringList Pmc960VariableRules::values(const QStringList& names, const serialpo
 
 QString Pmc960VariableRules::hint() const {
     return tr("Double-click a stored value to change it; a T-table value is written between SW1 and SW0.");
+}
+
+// The parameter table as the lines that set it (Pmc960ParameterFile): the T-table parameters a backup holds,
+// between SW1 and SW0, with their stored (?) values; the motion buffer and system registers are left out.
+VariableRules::FileText Pmc960VariableRules::fileText(const QList<QPair<QString, QString>>& values) const {
+    using serialport::Pmc960ParameterFile;
+    const auto backedUp = Pmc960ParameterFile::backedUp();
+    QStringList lines;
+    for (const auto& [name, value] : values) {
+        const Pmc960Parameter* p = find(name);
+        if (!p || std::find(backedUp.begin(), backedUp.end(), p) == backedUp.end()) continue;
+        if (const QString line = Pmc960ParameterFile::settingLine(*p, value); !line.isEmpty()) lines << line;
+    }
+    return {lines.isEmpty() ? QString() : Pmc960ParameterFile::toText({}, lines), int(lines.size())};
 }
 
 } // namespace app

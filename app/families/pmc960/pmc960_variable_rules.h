@@ -22,6 +22,8 @@ public:
     QString secondTitle() const override { return tr("In use (!)"); }
     QString secondReadLine(const QString& name) const override;
     bool liveByDefault() const override { return false; }
+    QString fileKind() const override { return tr("MPL lines"); }
+    FileText fileText(const QList<QPair<QString, QString>>& values) const override;
 };
 
 } // namespace app

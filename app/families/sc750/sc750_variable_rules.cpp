@@ -4,6 +4,7 @@
 #include "sc750_variable_groups.h"
 
 #include "drive_core/catalog/sc750_catalog.h"
+#include "serialport/sc750_parameter_file.h"
 
 namespace app {
 
@@ -52,6 +53,22 @@ QStringList Sc750VariableRules::values(const QStringList& names, const serialpor
 
 QString Sc750VariableRules::hint() const {
     return tr("Double-click a value to change it; the SC750 takes changes while no program executes.");
+}
+
+// A .PRM holds the set-up parameters only (the PARAMS block, L943-L975): a run-time variable cannot be in it.
+VariableRules::FileText Sc750VariableRules::fileText(const QList<QPair<QString, QString>>& values) const {
+    namespace cat = drive_core::catalog::sc750;
+    QList<QPair<QString, QString>> parameters;
+    for (const auto& [name, value] : values) {
+        const std::string upper = name.toUpper().toStdString();
+        const cat::VariableInfo* v = cat::findVariable(upper);
+        if (!v || v->access != cat::Access::Parameter) continue;
+        bool number = false;
+        const double x = value.toDouble(&number);
+        parameters.append({name.toUpper(), number ? serialport::Sc750ParameterFile::formatValue(upper, x) : value});
+    }
+    return {parameters.isEmpty() ? QString() : serialport::Sc750ParameterFile::block(parameters) + QLatin1Char('\n'),
+            int(parameters.size())};
 }
 
 } // namespace app

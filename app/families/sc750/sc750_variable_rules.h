@@ -18,6 +18,8 @@ public:
     QString readLine(const QStringList& names) const override { return names.value(0); }
     QStringList values(const QStringList& names, const serialport::LineAnswer& answer) const override;
     QString hint() const override;
+    QString fileKind() const override { return QStringLiteral(".PRM"); }
+    FileText fileText(const QList<QPair<QString, QString>>& values) const override;
 };
 
 } // namespace app
