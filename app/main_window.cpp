@@ -21,7 +21,7 @@
 #include "terminal_widget.h"
 #include "variables_controller.h"
 #include "scope/scope_controller.h"
-#include "families/bds5/dep01/dep01_panel.h"
+#include "families/bds5/bds5_workspace.h"
 #include "errors/error_log_dock.h"
 #include "errors/error_source.h"
 #include "errors/program_line_jump.h"
@@ -60,17 +60,21 @@ constexpr QSize kDefaultSize(1200, 800); // on a screen that has room for it
 
 MainWindow::MainWindow(drive_core::DriveFamily family, QWidget* parent)
     : QMainWindow(parent), m_editorArea(new EditorArea(this)), m_terminalDock(new TerminalDock(this)),
-      m_connection(new DriveConnection(this)), m_documents(m_editorArea->documents()) {
+      m_bds5(new Bds5Workspace(*this)), m_documents(m_editorArea->documents()) {
     resources::initialize();
     setObjectName(QStringLiteral("mainWindow"));
     resizeToFitScreen();
     setCentralWidget(m_editorArea);
     addDockWidget(Qt::BottomDockWidgetArea, m_terminalDock);
 
-    createDriveTools();
+    createDocks();
     createMenus();
     createStatusBar();
-    wireConnection();
+    TerminalWidget* term = terminal();
+    connect(term, &TerminalWidget::bytesTyped, this, [this](const QByteArray& b) { typeIntoTerminal(b, false); });
+    connect(term, &TerminalWidget::urgentBytesTyped, this, [this](const QByteArray& b) { typeIntoTerminal(b, true); });
+    m_bds5->build();
+    addWorkspace(m_bds5);                    // Motion Link for the BDS5
     addWorkspace(new Sc750Workspace(*this)); // issue 8: Motion Dialogue for the SC750
     addWorkspace(new Pmc960Workspace(*this)); // issue 9: MPL menu, status panel, parameter table
     connect(m_documents, &DocumentController::documentChanged, this, &MainWindow::updateTitle);
@@ -104,32 +108,56 @@ TerminalWidget* MainWindow::terminal() const {
     return m_terminalDock->terminal();
 }
 
+DriveConnection& MainWindow::connection() const {
+    return m_bds5->connection();
+}
+DriveActions& MainWindow::driveActions() const {
+    return m_bds5->driveActions();
+}
+CaptureLog& MainWindow::captureLog() const {
+    return m_bds5->captureLog();
+}
+CaptureDock* MainWindow::captureDock() const {
+    return m_bds5->captureDock();
+}
+ProgramController& MainWindow::programController() const {
+    return m_bds5->programController();
+}
+VariablesController& MainWindow::variablesController() const {
+    return m_bds5->variablesController();
+}
+ScopeController& MainWindow::scopeController() const {
+    return m_bds5->scopeController();
+}
+VariablesDock* MainWindow::variablesDock() const {
+    return m_bds5->variablesDock();
+}
+IoPanel* MainWindow::ioPanel() const {
+    return m_bds5->ioPanel();
+}
+Dep01Panel* MainWindow::dep01Panel() const {
+    return m_bds5->dep01Panel();
+}
+
 void MainWindow::connectDrive(const ConnectionChoice& choice) {
     m_axis = choice.line ? choice.axis : QString();
     m_axisLine = choice.line;
     updateTitle();
     FamilyWorkspace* next = workspace(choice.family);
-    if (choice.family != drive_core::DriveFamily::Bds5 && !next) {
+    if (!next) {
         showLinkError(tr("This build of ServoDesk has no %1 support.").arg(ConnectionChoice::familyName(choice.family)));
         return;
     }
     for (FamilyWorkspace* w : m_workspaces)
-        if (w != next) w->deactivate();
+        if (w != next) w->deactivate(); // one family on the port at a time
     showFamily(choice.family);
-    if (next) {
-        m_connection->disconnectDrive(); // one family on the port at a time
-        // The terminal is shared by the families: a line says where what follows comes from.
-        const QString where = choice.kind == ConnectionChoice::Kind::Simulator
-                                  ? choice.portText()
-                                  : tr("%1 on %2").arg(ConnectionChoice::familyName(choice.family), choice.portText());
-        terminal()->displayNotice(tr("Connecting to %1").arg(where));
-        next->activate(choice);
-        updateLinkStatus();
-        return;
-    }
-    m_connection->connectTo(choice);
-    if (m_connection->isConnected())
-        terminal()->displayNotice(tr("Connected to %1").arg(m_connection->linkDescription()));
+    // The terminal is shared by the families: a line says where what follows comes from.
+    const QString where = choice.kind == ConnectionChoice::Kind::Simulator
+                              ? choice.portText()
+                              : tr("%1 on %2").arg(ConnectionChoice::familyName(choice.family), choice.portText());
+    terminal()->displayNotice(tr("Connecting to %1").arg(where));
+    next->activate(choice);
+    updateLinkStatus();
 }
 
 ConnectionDialog* MainWindow::showConnectionDialog() {
@@ -148,9 +176,22 @@ void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
         menu->menuAction()->setVisible(false);
     }
     for (QDockWidget* dock : workspace->docks()) {
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        dock->hide();
+        if (dockWidgetArea(dock) == Qt::NoDockWidgetArea) { // not placed by the workspace itself
+            addDockWidget(Qt::RightDockWidgetArea, dock);
+            dock->hide();
+        }
         m_viewMenu->addAction(dock->toggleViewAction());
+    }
+    for (QToolBar* bar : workspace->toolBars()) {
+        addToolBar(bar);
+        m_familyToolBars.insert(workspace, bar);
+    }
+    if (const QList<QAction*> items = workspace->driveMenuActions(); !items.isEmpty()) {
+        for (QAction* item : items) {
+            QAction* added = item ? item : m_driveMenu->addSeparator();
+            if (item) m_driveMenu->addAction(item);
+            m_familyDriveItems.insert(workspace, added);
+        }
     }
     if (const QList<QAction*> actions = workspace->toolBarActions(); !actions.isEmpty()) {
         auto* bar = new QToolBar(ConnectionChoice::familyName(workspace->family()), this);
@@ -182,31 +223,19 @@ FamilyWorkspace* MainWindow::workspace(drive_core::DriveFamily family) const {
 
 void MainWindow::showFamily(drive_core::DriveFamily family) {
     if (m_axesDock) m_axesDock->followFamily(family);
-    const bool bds5 = family == drive_core::DriveFamily::Bds5;
-    for (QAction* action : m_bds5Only) action->setVisible(bds5);
-    // A toolbar whose actions are all hidden would stay as an empty strip: the BDS5's go with its actions.
-    for (QToolBar* bar : std::as_const(m_bds5ToolBars)) bar->setVisible(bds5);
     for (auto it = m_familyToolBars.cbegin(); it != m_familyToolBars.cend(); ++it) {
         it.value()->setVisible(it.key() == workspace(family));
         it.value()->toggleViewAction()->setVisible(it.key() == workspace(family));
     }
+    for (auto it = m_familyDriveItems.cbegin(); it != m_familyDriveItems.cend(); ++it)
+        it.value()->setVisible(it.key() == workspace(family));
     for (FamilyWorkspace* w : m_workspaces) {
         const bool active = w == workspace(family);
         for (QMenu* menu : w->menus()) menu->menuAction()->setVisible(active);
         for (QDockWidget* dock : w->docks()) {
             dock->toggleViewAction()->setVisible(active);
-            if (!active) dock->hide();
+            if (!active) dock->hide(); // it would talk to a session that is not there
         }
-    }
-    if (bds5) {
-        for (QDockWidget* dock : {m_scopeController->scopeDock(), m_scopeController->tuningDock()})
-            dock->toggleViewAction()->setVisible(true);
-    } else {
-        // The BDS5's own docks would talk to a session that is not there.
-        for (QDockWidget* dock : std::initializer_list<QDockWidget*>{
-                 m_scopeController->scopeDock(), m_scopeController->tuningDock(), m_variablesDock, m_ioPanel,
-                 m_dep01Panel, m_captureDock})
-            dock->hide();
     }
     m_errorLogDock->setFamily(family); // the one Error Log shows the chosen family's errors
     if (m_family == family) return;
@@ -223,7 +252,6 @@ void MainWindow::openSampleProgram(drive_core::DriveFamily family) {
 
 void MainWindow::disconnectActive() {
     if (FamilyWorkspace* w = workspace(m_family)) w->deactivate();
-    else m_connection->disconnectDrive();
     m_axis.clear();
     m_axisLine.reset();
     updateTitle();
@@ -245,23 +273,11 @@ void MainWindow::createMenus() {
     QMenu* search = menuBar()->addMenu(tr("&Search"));
     m_editorArea->fillSearchMenu(search);
     search->addAction(m_outlineDock->goToLabelAction());
-    m_programController = new ProgramController(*this);
-    m_bds5Only << menuBar()->addMenu(m_programController->menu());
-    m_variablesController = new VariablesController(*this);
-    m_bds5Only << menuBar()->addMenu(m_variablesController->menu());
-    m_scopeController = new ScopeController(*this); // Scope menu; scope and tuning docks, hidden until used
-    m_bds5Only << menuBar()->addMenu(m_scopeController->menu());
-    for (QDockWidget* dock : {m_scopeController->scopeDock(), m_scopeController->tuningDock()}) {
-        addDockWidget(Qt::BottomDockWidgetArea, dock);
-        dock->hide(); // tabbed with the terminal when first shown (ScopeController)
-    }
 
+    // The families' menus go here, before Drive (addWorkspace).
     QMenu* drive = m_driveMenu = menuBar()->addMenu(tr("&Drive"));
     drive->addAction(tr("&Connect..."), QKeySequence(tr("Ctrl+K")), this, &MainWindow::showConnectionDialog);
     m_disconnectAction = drive->addAction(tr("&Disconnect"), this, &MainWindow::disconnectActive);
-    const qsizetype common = drive->actions().size();
-    m_driveActions->addToMenu(drive);
-    m_bds5Only << drive->actions().mid(common);
 
     QMenu* machine = menuBar()->addMenu(tr("Mach&ine"));
     QAction* axesPanel = m_axesDock->toggleViewAction();
@@ -281,22 +297,10 @@ void MainWindow::createMenus() {
     QAction* toggleTerminal = m_terminalDock->toggleViewAction();
     toggleTerminal->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
     view->addAction(toggleTerminal);
-    view->addAction(m_captureDock->toggleViewAction());
     view->addAction(m_helpBrowser->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
-    view->addAction(m_variablesDock->toggleViewAction());
     view->addAction(terminalTabAction(*this, m_terminalDock, m_errorLogDock, m_errorLogDock->windowTitle(), this));
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_ioPanel, m_dep01Panel})
-        view->addAction(dock->toggleViewAction());
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_variablesDock, m_ioPanel, m_dep01Panel})
-        m_bds5Only << dock->toggleViewAction();
-    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
-    m_bds5Only << tools->menuAction();
-    tools->addAction(tr("&Setup Wizard..."), this, [this] { SetupWizard::openFor(*m_connection, this); });
-
-    QMenu* capture = menuBar()->addMenu(tr("Capt&ure"));
-    m_captureDock->addToMenu(capture);
-    m_bds5Only << capture->menuAction() << m_captureDock->toggleViewAction();
+    view->addSeparator(); // the active family's docks follow (addWorkspace)
     m_optionsController->addToMenu(menuBar()->addMenu(tr("&Options")));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -315,35 +319,15 @@ void MainWindow::createMenus() {
     help->addAction(tr("&About ServoDesk"), this, &MainWindow::showAbout);
 }
 
-void MainWindow::createDriveTools() {
-    m_driveActions = new DriveActions(*this);
-    for (QToolBar* bar : {m_driveActions->createDriveToolBar(), m_driveActions->createDebugToolBar()}) {
-        addToolBar(bar);
-        m_bds5Only << bar->toggleViewAction();
-        m_bds5ToolBars << bar;
-    }
+void MainWindow::createDocks() {
     m_debugHighlighter = new DebugHighlighter(*this, this);
-    m_captureLog = new CaptureLog(this);
-    connect(m_connection, &DriveConnection::rawReceived, m_captureLog, &CaptureLog::addReceived);
-    connect(m_connection, &DriveConnection::rawSent, m_captureLog, &CaptureLog::addSent);
-    m_captureDock = new CaptureDock(*m_captureLog, this);
-    addDockWidget(Qt::BottomDockWidgetArea, m_captureDock);
-    tabifyDockWidget(m_terminalDock, m_captureDock);
-    m_terminalDock->raise();
     m_optionsController = new OptionsController(*this, *m_debugHighlighter);
     m_helpBrowser = new HelpBrowser(this);
     addDockWidget(Qt::RightDockWidgetArea, m_helpBrowser);
     m_helpBrowser->hide();
     m_outlineDock = new editor::OutlineDock(this); // labels and tasks of the current program, Go to label
     addDockWidget(Qt::RightDockWidgetArea, m_outlineDock);
-    m_variablesDock = new VariablesDock(*m_connection, this); // issue 7 docks: hidden until asked for
-    m_errorLogDock = new ErrorLogDock(*m_connection, this);
-    m_ioPanel = new IoPanel(*m_connection, this);
-    m_dep01Panel = new Dep01Panel(*m_connection, this);
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_variablesDock, m_ioPanel, m_dep01Panel}) {
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        dock->hide();
-    }
+    m_errorLogDock = new ErrorLogDock(this);
     addDockWidget(Qt::BottomDockWidgetArea, m_errorLogDock);
     m_errorLogDock->hide();
     m_axesDock = new AxesDock(this); // issue 21: a multidrop line's axes, hidden until asked for
@@ -393,28 +377,11 @@ void MainWindow::createStatusBar() {
     updateLinkStatus();
 }
 
-void MainWindow::wireConnection() {
-    TerminalWidget* term = terminal();
-    connect(term, &TerminalWidget::bytesTyped, this, [this](const QByteArray& b) { typeIntoTerminal(b, false); });
-    connect(term, &TerminalWidget::urgentBytesTyped, this, [this](const QByteArray& b) { typeIntoTerminal(b, true); });
-    connect(m_connection, &DriveConnection::shownReceived, term, &TerminalWidget::displayBytes);
-    connect(m_connection, &DriveConnection::modeChanged, this, &MainWindow::showMode);
-    connect(m_connection, &DriveConnection::linkChanged, this, &MainWindow::updateLinkStatus);
-    connect(m_connection, &DriveConnection::connectedChanged, this, &MainWindow::updateLinkStatus);
-    connect(m_connection, &DriveConnection::connectedChanged, this, [this](bool connected) {
-        if (!connected)
-            terminal()->displayNotice(tr("Disconnected from %1").arg(m_connection->linkDescription()));
-    });
-    connect(m_connection, &DriveConnection::sessionStateChanged, this, &MainWindow::showState);
-    connect(m_connection, &DriveConnection::errorOccurred, this, &MainWindow::showLinkError);
-}
-
-// The terminal talks to the active family: the BDS5 connection, or a workspace that has a terminal (the
-// PMC-960). The SC750's program I/O has Motion Dialogue's Output window instead; typing here says so once.
+// The terminal talks to the active family when it has a terminal (the BDS5, the PMC-960). The SC750's
+// program I/O has Motion Dialogue's Output window instead; typing here says so once.
 void MainWindow::typeIntoTerminal(const QByteArray& bytes, bool urgent) {
-    FamilyWorkspace* active = m_family == drive_core::DriveFamily::Bds5 ? nullptr : workspace(m_family);
-    if (!active) return urgent ? m_connection->sendUrgent(bytes) : m_connection->sendRaw(bytes);
-    if (active->typeIntoTerminal(bytes, urgent) || m_terminalHintShown == m_family) return;
+    FamilyWorkspace* active = workspace(m_family);
+    if (!active || active->typeIntoTerminal(bytes, urgent) || m_terminalHintShown == m_family) return;
     m_terminalHintShown = m_family;
     terminal()->displayNotice(tr("The %1 has no terminal: its program's PRINT and INPUT are in the Output window "
                                  "(F4).")
@@ -439,59 +406,19 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::updateLinkStatus() {
-    if (FamilyWorkspace* w = workspace(m_family)) {
-        m_linkLabel->setText(w->statusText());
-        m_portLabel->parentWidget()->setVisible(false);
-        m_modeLabel->parentWidget()->setVisible(false);
-        m_disconnectAction->setEnabled(w->isConnected());
-        const bool on = w->isConnected();
-        m_stateLabel->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
-                                  .arg(on ? QStringLiteral("#1e8e3e") : QStringLiteral("#b3261e"),
-                                       on ? tr("Connected") : tr("Disconnected")));
-        return;
-    }
-    m_modeLabel->parentWidget()->setVisible(true);
-    const bool hasLink = m_connection->hasLink();
-    m_linkLabel->setText(hasLink ? m_connection->linkDescription() : tr("No drive"));
-    // A serial link's description already names its port and rate ("/dev/ttyUSB0 9600 8N1").
-    const bool simulated = m_connection->choice().kind == ConnectionChoice::Kind::Simulator;
-    // The link label already says "Simulated BDS5": the port cell adds the rate alone.
-    m_portLabel->setText(hasLink ? tr("%1 baud").arg(m_connection->choice().baudRate) : QString());
-    m_portLabel->parentWidget()->setVisible(hasLink && simulated);
-    if (!m_connection->isConnected()) m_modeLabel->setText(tr("Mode: \u2014"));
-    m_disconnectAction->setEnabled(m_connection->isConnected());
-    showState();
-}
-
-void MainWindow::showMode(serialport::Bds5Mode mode, const QString& prompt) {
-    m_modeLabel->setText(QStringLiteral("%1 %2").arg(serialport::modeName(mode), prompt));
-}
-
-void MainWindow::showState() {
-    if (workspace(m_family)) return; // the workspace's own status (updateLinkStatus)
-    using State = serialport::Bds5Session::State;
-    QString text = tr("Disconnected");
-    QString colour = QStringLiteral("#b3261e");
-    if (m_connection->isConnected() && m_connection->session()) {
-        switch (m_connection->session()->state()) {
-        case State::Closed:
-            break;
-        case State::WaitingForPrompt:
-            text = tr("Connected");
-            colour = QStringLiteral("#c77700");
-            break;
-        case State::Ready:
-            text = tr("Ready");
-            colour = QStringLiteral("#1e8e3e");
-            break;
-        case State::Busy:
-            text = tr("Busy");
-            colour = QStringLiteral("#1a73e8");
-            break;
-        }
-    }
+    const FamilyWorkspace* w = workspace(m_family);
+    if (!w) return;
+    m_linkLabel->setText(w->statusText());
+    const QString port = w->portText();
+    m_portLabel->setText(port);
+    m_portLabel->parentWidget()->setVisible(!port.isEmpty());
+    const QString mode = w->modeText();
+    m_modeLabel->setText(mode);
+    m_modeLabel->parentWidget()->setVisible(!mode.isEmpty());
+    m_disconnectAction->setEnabled(w->isConnected());
+    const FamilyWorkspace::LinkState state = w->linkState();
     m_stateLabel->setText(
-        QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2").arg(colour, text.toHtmlEscaped()));
+        QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2").arg(state.colour, state.text.toHtmlEscaped()));
 }
 
 void MainWindow::showLinkError(const QString& message) {
@@ -505,8 +432,8 @@ void MainWindow::showAbout() {
     box->setWindowTitle(tr("About ServoDesk"));
     box->setIconPixmap(QApplication::windowIcon().pixmap(64, 64));
     box->setText(tr("<h3>ServoDesk %1</h3><p>An IDE for programmable servo drives: write, download, run and "
-                    "debug programs for the Kollmorgen BDS5, on a serial port or against the built-in "
-                    "simulated drive.</p>")
+                    "debug programs for the Kollmorgen BDS5, the Pacific Scientific SC750 and the ORMEC "
+                    "PMC-960, on a serial port or against the built-in simulated drives.</p>")
                      .arg(QApplication::applicationVersion()));
     box->open();
 }

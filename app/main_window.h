@@ -24,6 +24,7 @@ class ProgramEditor;
 namespace app {
 
 class AxesDock;
+class Bds5Workspace;
 class CaptureDock;
 class CaptureLog;
 class ConnectionDialog;
@@ -67,26 +68,28 @@ public:
     EditorArea* editorArea() const { return m_editorArea; }
     TerminalDock* terminalDock() const { return m_terminalDock; }
     TerminalWidget* terminal() const;
-    DriveConnection& connection() const { return *m_connection; }
-    DriveActions& driveActions() const { return *m_driveActions; }
+    // The BDS5's workspace and, through it, its connection and tools (app/families/bds5/bds5_workspace.h).
+    Bds5Workspace& bds5() const { return *m_bds5; }
+    DriveConnection& connection() const;
+    DriveActions& driveActions() const;
     DebugHighlighter& debugHighlighter() const { return *m_debugHighlighter; }
-    CaptureLog& captureLog() const { return *m_captureLog; }
-    CaptureDock* captureDock() const { return m_captureDock; }
+    CaptureLog& captureLog() const;
+    CaptureDock* captureDock() const;
     OptionsController& optionsController() const { return *m_optionsController; }
     // The BDS5 reference dock; helpBrowser()->showTopic("VMAX") opens it at a topic (the editor's F1).
     HelpBrowser* helpBrowser() const { return m_helpBrowser; }
     // The Outline dock (labels and tasks of the current program; Search > Go to Label).
     editor::OutlineDock* outlineDock() const { return m_outlineDock; }
     // The Program and Variables menus (downloads, uploads, verify, .VAR transfers).
-    ProgramController& programController() const { return *m_programController; }
-    VariablesController& variablesController() const { return *m_variablesController; }
+    ProgramController& programController() const;
+    VariablesController& variablesController() const;
     // The Scope menu, the Scope dock and the Tuning panel dock (issue 6).
-    ScopeController& scopeController() const { return *m_scopeController; }
+    ScopeController& scopeController() const;
     // Issue 7: variable browser, error log, simulator I/O panel, DEP-01 panel (View menu; hidden at first).
-    VariablesDock* variablesDock() const { return m_variablesDock; }
+    VariablesDock* variablesDock() const;
     ErrorLogDock* errorLogDock() const { return m_errorLogDock; }
-    IoPanel* ioPanel() const { return m_ioPanel; }
-    Dep01Panel* dep01Panel() const { return m_dep01Panel; }
+    IoPanel* ioPanel() const;
+    Dep01Panel* dep01Panel() const;
     // Issue 21: the Axes panel and the Machine menu (a multidrop line's axes, backup, compare, restore).
     AxesDock* axesDock() const { return m_axesDock; }
     // The axis of a multidrop line every tool talks to, "" for a single drive.
@@ -107,16 +110,13 @@ protected:
 
 private:
     void createMenus();
-    void createDriveTools(); // drive and debug toolbars, capture, options, help (before createMenus)
+    void createDocks(); // options, help, outline, error log, axes (before createMenus)
     void createStatusBar();
     void resizeToFitScreen();
-    void wireConnection();
     void typeIntoTerminal(const QByteArray& bytes, bool urgent);
     void followEditor(editor::ProgramEditor* current); // outline, diagnostics count, F1 -> reference
     void updateTitle();
     void updateLinkStatus();
-    void showMode(serialport::Bds5Mode mode, const QString& prompt);
-    void showState();
     void showLinkError(const QString& message);
     void showAbout();
     void showFamily(drive_core::DriveFamily family); // menus, toolbars and docks of that family only
@@ -125,23 +125,14 @@ private:
 
     EditorArea* m_editorArea;
     TerminalDock* m_terminalDock;
-    DriveConnection* m_connection;
+    Bds5Workspace* m_bds5;
     DocumentController* m_documents;
-    DriveActions* m_driveActions = nullptr;
     DebugHighlighter* m_debugHighlighter = nullptr;
-    CaptureLog* m_captureLog = nullptr;
-    CaptureDock* m_captureDock = nullptr;
     OptionsController* m_optionsController = nullptr;
     HelpBrowser* m_helpBrowser = nullptr;
     editor::OutlineDock* m_outlineDock = nullptr;
     editor::DiagnosticsStatus* m_diagnosticsStatus = nullptr;
-    ProgramController* m_programController = nullptr;
-    VariablesController* m_variablesController = nullptr;
-    ScopeController* m_scopeController = nullptr;
-    VariablesDock* m_variablesDock = nullptr;
     ErrorLogDock* m_errorLogDock = nullptr;
-    IoPanel* m_ioPanel = nullptr;
-    Dep01Panel* m_dep01Panel = nullptr;
     AxesDock* m_axesDock = nullptr;
     QString m_axis;                              // the axis in use on m_axisLine, "" for a single drive
     std::shared_ptr<serialport::Link> m_axisLine; // the Axes panel's line the connection is on, if any
@@ -152,9 +143,8 @@ private:
     QAction* m_disconnectAction = nullptr;
     QMenu* m_driveMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
-    QList<QAction*> m_bds5Only; // menus, toolbars and Drive-menu actions that act on the BDS5 session
-    QList<QToolBar*> m_bds5ToolBars;                     // Drive and Debug: shown with the BDS5 only
-    QHash<FamilyWorkspace*, QToolBar*> m_familyToolBars; // a workspace's own, shown with its family
+    QMultiHash<FamilyWorkspace*, QToolBar*> m_familyToolBars;  // a workspace's own, shown with its family
+    QMultiHash<FamilyWorkspace*, QAction*> m_familyDriveItems; // its Drive-menu entries, likewise
     QList<FamilyWorkspace*> m_workspaces;
     drive_core::DriveFamily m_family = drive_core::DriveFamily::Bds5;
     std::optional<drive_core::DriveFamily> m_terminalHintShown; // "has no terminal" said for this family

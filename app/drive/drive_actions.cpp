@@ -93,13 +93,9 @@ QAction* DriveActions::make(const QString& text, const QString& tip, const QStri
     return action;
 }
 
-void DriveActions::addToMenu(QMenu* menu) const {
-    menu->addSeparator();
-    menu->addActions({m_run, m_break, m_stop, m_kill});
-    menu->addSeparator();
-    menu->addActions({m_enable, m_disable});
-    menu->addSeparator();
-    menu->addActions({m_monitor, m_singleStep, m_step, m_continue, m_trace, m_variableInput});
+QList<QAction*> DriveActions::menuActions() const {
+    return {nullptr,   m_run,        m_break, m_stop,     m_kill,  nullptr,         m_enable, m_disable,
+            nullptr,   m_monitor,    m_singleStep, m_step, m_continue, m_trace, m_variableInput};
 }
 
 QToolBar* DriveActions::createDriveToolBar() {

@@ -25,7 +25,8 @@ class DriveActions final : public QObject {
 public:
     explicit DriveActions(MainWindow& window);
 
-    void addToMenu(QMenu* menu) const;
+    // The Drive menu's BDS5 entries in order; nullptr puts a separator.
+    QList<QAction*> menuActions() const;
     // Toolbars parented to the main window, object names "driveToolBar" and "debugToolBar".
     QToolBar* createDriveToolBar();
     QToolBar* createDebugToolBar();

@@ -38,6 +38,7 @@ public:
     serialport::Bds5Session* session() const { return m_session ? &m_session->bds5() : nullptr; }
     // The same session behind the contract every family meets (serialport/drive_session.h).
     serialport::DriveSession* driveSession() const { return m_session.get(); }
+    serialport::Link* link() const { return m_link.get(); }
 
     // Bytes typed by the user, passed to the drive untouched. Dropped (with errorOccurred) when closed.
     void sendRaw(const QByteArray& bytes);

@@ -1,6 +1,6 @@
-// FamilyWorkspace: everything the IDE offers for one drive family other than the BDS5 (whose tools are
-// the main window's own): its menus, its docks, and its own link and session. The main window shows the
-// workspace of the family chosen in Drive > Connect and hides the rest; a workspace opens its link in
+// FamilyWorkspace: everything the IDE offers for one drive family (app/families/<family>/): its menus,
+// toolbars and docks, its entries in the Drive menu, and its own link and session. The main window shows
+// the workspace of the family chosen in Drive > Connect and hides the rest; a workspace opens its link in
 // activate() and closes it in deactivate(), so only one family talks on a port at a time. GUI thread only.
 //
 //   auto* sc750 = new Sc750Workspace(window);   // parented to the window
@@ -17,6 +17,7 @@
 class QAction;
 class QDockWidget;
 class QMenu;
+class QToolBar;
 
 namespace serialport {
 class DriveSession;
@@ -39,6 +40,10 @@ public:
     // The family's Run, Stop and such for its own toolbar (the main window makes it, shown with the family),
     // in the order shown; nullptr puts a separator. Empty: no toolbar.
     virtual QList<QAction*> toolBarActions() const { return {}; }
+    // Toolbars the family makes itself (the BDS5's Drive and Debug), shown with it.
+    virtual QList<QToolBar*> toolBars() const { return {}; }
+    // The family's entries in the Drive menu, after Connect and Disconnect; nullptr puts a separator.
+    virtual QList<QAction*> driveMenuActions() const { return {}; }
     // Connect to the choice's port (or the family's simulated drive); called again to reconnect.
     virtual void activate(const ConnectionChoice& choice) = 0;
     // Close the link; the editors keep their contents.
@@ -46,6 +51,15 @@ public:
     virtual bool isConnected() const = 0;
     // For the status bar: "SC750 axis 255, Ready" and similar.
     virtual QString statusText() const = 0;
+    // The status bar's other cells: the port ("9600 baud"), the drive's mode ("Interactive -->"), each hidden
+    // when empty; the connection's state, a word and its colour.
+    struct LinkState {
+        QString text;
+        QString colour; // "#1e8e3e"
+    };
+    virtual QString portText() const { return {}; }
+    virtual QString modeText() const { return {}; }
+    virtual LinkState linkState() const;
     // The family-neutral session and its link while connected (nullptr otherwise): the generic tools (the
     // tuning panel) work through these.
     virtual serialport::DriveSession* driveSession() const { return nullptr; }

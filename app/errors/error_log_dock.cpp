@@ -2,7 +2,7 @@
 #include "error_log_dock.h"
 
 #include "error_log_model.h"
-#include "families/bds5/bds5_error_source.h"
+#include "error_source.h"
 
 #include <QFile>
 #include <QFileDialog>
@@ -15,7 +15,7 @@
 
 namespace app {
 
-ErrorLogDock::ErrorLogDock(DriveConnection& connection, QWidget* parent) : QDockWidget(tr("Error Log"), parent) {
+ErrorLogDock::ErrorLogDock(QWidget* parent) : QDockWidget(tr("Error Log"), parent) {
     setObjectName(QStringLiteral("errorLogDock"));
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
@@ -46,21 +46,22 @@ ErrorLogDock::ErrorLogDock(DriveConnection& connection, QWidget* parent) : QDock
     connect(m_clear, &QPushButton::clicked, this, &ErrorLogDock::clearHistory);
     connect(save, &QPushButton::clicked, this, &ErrorLogDock::exportWithDialog);
     connect(m_view, &QTableView::activated, this, &ErrorLogDock::activate);
-    addSource(new Bds5ErrorSource(connection, this));
-    showSource(m_sources.first());
 }
 
 void ErrorLogDock::addSource(ErrorSource* source) {
     m_sources.append(source);
-    // A workspace's source may go before the dock (the dock's own, the BDS5's, goes with it).
-    if (source->parent() != this)
-        connect(source, &QObject::destroyed, this, [this, source] {
-            m_sources.removeAll(source);
-            if (m_current == source) showSource(m_sources.first());
-        });
+    // A workspace's source may go before the dock.
+    connect(source, &QObject::destroyed, this, [this, source] {
+        m_sources.removeAll(source);
+        if (m_current == source) {
+            m_current = nullptr;
+            if (!m_sources.isEmpty()) showSource(m_sources.first());
+        }
+    });
     connect(source, &ErrorSource::statusChanged, this, [this, source](const QString& text) {
         if (source == m_current) setStatus(text);
     });
+    if (!m_current) showSource(source); // the first family's, until setFamily
 }
 
 ErrorSource* ErrorLogDock::source(drive_core::DriveFamily family) const {

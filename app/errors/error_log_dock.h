@@ -15,17 +15,16 @@ class QTableView;
 
 namespace app {
 
-class DriveConnection;
 class ErrorLogModel;
 class ErrorSource;
 
 class ErrorLogDock final : public QDockWidget {
     Q_OBJECT
 public:
-    // Starts with the BDS5's source (on connection) shown.
-    explicit ErrorLogDock(DriveConnection& connection, QWidget* parent = nullptr);
+    // Empty until a family's source is added: the first one added is shown until setFamily.
+    explicit ErrorLogDock(QWidget* parent = nullptr);
 
-    // Another family's source; the dock shows it while that family is chosen (setFamily).
+    // A family's source (FamilyWorkspace::errorSource); the dock shows it while that family is chosen.
     void addSource(ErrorSource* source);
     void setFamily(drive_core::DriveFamily family);
     ErrorSource& source() const { return *m_current; }
