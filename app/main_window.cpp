@@ -5,38 +5,27 @@
 #include "status_bar_room.h"
 #include "drive/terminal_tabs.h"
 
-#include "capture_dock.h"
-#include "capture_log.h"
 #include "connection_dialog.h"
 #include "debug_highlighter.h"
 #include "document_controller.h"
 #include "editor_area.h"
 #include "family_workspace.h"
-#include "drive_actions.h"
-#include "drive_connection.h"
 #include "help_browser.h"
 #include "options_controller.h"
-#include "program_controller.h"
 #include "terminal_dock.h"
 #include "terminal_widget.h"
-#include "variables_controller.h"
-#include "scope/scope_controller.h"
 #include "families/bds5/bds5_workspace.h"
 #include "errors/error_log_dock.h"
 #include "errors/error_source.h"
 #include "errors/program_line_jump.h"
-#include "io/io_panel.h"
-#include "variables/variables_dock.h"
 #include "families/sc750/sc750_workspace.h"
 #include "families/pmc960/pmc960_workspace.h"
-#include "families/bds5/wizard/setup_wizard.h"
 
 #include "editor/diagnostics_status.h"
 #include "editor/keymap.h"
 #include "editor/outline_dock.h"
 #include "editor/program_editor.h"
 #include "resources/resources.h"
-#include "serialport/bds5_protocol.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -307,7 +296,7 @@ void MainWindow::createMenus() {
     // Motion Dialogue's Help menu (Index, General, Editor Commands, About) for every family: the reference
     // and the introduction follow the family chosen in Drive > Connect.
     QAction* reference = help->addAction(tr("BDS5 &Reference"), this, [this] {
-        m_helpBrowser->showTopic(m_family == drive_core::DriveFamily::Bds5 ? QStringLiteral("MA") : QStringLiteral("intro"));
+        if (const FamilyWorkspace* w = workspace(m_family)) m_helpBrowser->showTopic(w->referenceTopic());
     });
     connect(this, &MainWindow::familyChanged, this, [this, reference](drive_core::DriveFamily family) {
         m_helpBrowser->setFamily(family);

@@ -54,8 +54,8 @@ public:
     explicit MainWindow(drive_core::DriveFamily family = drive_core::DriveFamily::Bds5, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Replaces the current connection (if any) with a new one and opens it. A choice of another family
-    // than the BDS5 goes to that family's workspace, whose menus and docks then replace the BDS5's.
+    // Replaces the current connection (if any) with a new one and opens it: the choice's family workspace
+    // connects, and its menus, toolbars and docks replace the previous family's.
     void connectDrive(const ConnectionChoice& choice);
     // Drive > Connect...: shows the dialog without blocking and returns it (the tour grabs it).
     ConnectionDialog* showConnectionDialog();

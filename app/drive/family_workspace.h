@@ -72,6 +72,8 @@ public:
     // The family's sample program, a resource (":/samples/hello.bas"): the first tab when the IDE starts
     // with this family, named after the resource's file name. Empty: the BDS5's opens instead.
     virtual QString sampleProgram() const { return {}; }
+    // Help > <family> Reference opens the reference at this topic.
+    virtual QString referenceTopic() const { return QStringLiteral("intro"); }
     // The Terminal dock while this workspace is active: bytes typed there (urgent: ^X, Esc). False when the
     // family has no terminal of its own (the main window then says where to type instead).
     virtual bool typeIntoTerminal(const QByteArray& bytes, bool urgent) {

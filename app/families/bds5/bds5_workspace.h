@@ -65,6 +65,7 @@ public:
     ErrorSource* errorSource() const override;
     QString busyReason() const override;
     QString sampleProgram() const override;
+    QString referenceTopic() const override { return QStringLiteral("MA"); } // the command reference, A to Z
     bool typeIntoTerminal(const QByteArray& bytes, bool urgent) override;
 
 private:
