@@ -103,29 +103,11 @@ DriveConnection& MainWindow::connection() const {
 DriveActions& MainWindow::driveActions() const {
     return m_bds5->driveActions();
 }
-CaptureLog& MainWindow::captureLog() const {
-    return m_bds5->captureLog();
-}
-CaptureDock* MainWindow::captureDock() const {
-    return m_bds5->captureDock();
-}
 ProgramController& MainWindow::programController() const {
     return m_bds5->programController();
 }
-VariablesController& MainWindow::variablesController() const {
-    return m_bds5->variablesController();
-}
 ScopeController& MainWindow::scopeController() const {
     return m_bds5->scopeController();
-}
-VariablesDock* MainWindow::variablesDock() const {
-    return m_bds5->variablesDock();
-}
-IoPanel* MainWindow::ioPanel() const {
-    return m_bds5->ioPanel();
-}
-Dep01Panel* MainWindow::dep01Panel() const {
-    return m_bds5->dep01Panel();
 }
 
 void MainWindow::connectDrive(const ConnectionChoice& choice) {

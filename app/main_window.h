@@ -73,23 +73,17 @@ public:
     DriveConnection& connection() const;
     DriveActions& driveActions() const;
     DebugHighlighter& debugHighlighter() const { return *m_debugHighlighter; }
-    CaptureLog& captureLog() const;
-    CaptureDock* captureDock() const;
     OptionsController& optionsController() const { return *m_optionsController; }
     // The BDS5 reference dock; helpBrowser()->showTopic("VMAX") opens it at a topic (the editor's F1).
     HelpBrowser* helpBrowser() const { return m_helpBrowser; }
     // The Outline dock (labels and tasks of the current program; Search > Go to Label).
     editor::OutlineDock* outlineDock() const { return m_outlineDock; }
-    // The Program and Variables menus (downloads, uploads, verify, .VAR transfers).
+    // The BDS5's Program menu (downloads, uploads, verify) and Drive-menu actions.
     ProgramController& programController() const;
-    VariablesController& variablesController() const;
     // The Scope menu, the Scope dock and the Tuning panel dock (issue 6).
     ScopeController& scopeController() const;
-    // Issue 7: variable browser, error log, simulator I/O panel, DEP-01 panel (View menu; hidden at first).
-    VariablesDock* variablesDock() const;
+    // The Error Log (every family's errors: FamilyWorkspace::errorSource).
     ErrorLogDock* errorLogDock() const { return m_errorLogDock; }
-    IoPanel* ioPanel() const;
-    Dep01Panel* dep01Panel() const;
     // Issue 21: the Axes panel and the Machine menu (a multidrop line's axes, backup, compare, restore).
     AxesDock* axesDock() const { return m_axesDock; }
     // The axis of a multidrop line every tool talks to, "" for a single drive.

@@ -2,6 +2,8 @@
 // session (the I/O panel through the simulator's bench), grabbed, then put away.
 #include "docks_tour_steps.h"
 
+#include "families/bds5/bds5_workspace.h"
+
 #include "drive_connection.h"
 #include "main_window.h"
 
@@ -83,7 +85,7 @@ ScreenshotTour::Step wizardStep(MainWindow& window, std::shared_ptr<QPointer<Set
 
 std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
     std::vector<ScreenshotTour::Step> steps;
-    VariablesDock* variables = window.variablesDock();
+    VariablesDock* variables = window.bds5().variablesDock();
     steps.push_back({.name = QStringLiteral("variable-browser"),
                      .act =
                          [&window, variables] {
@@ -174,7 +176,7 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
         if (*wizard) (*wizard)->reject(); // nothing was sent: closing discards the changes
     };
 
-    Dep01Panel* dep = window.dep01Panel();
+    Dep01Panel* dep = window.bds5().dep01Panel();
     steps.push_back(
         {.name = QStringLiteral("dep01"),
          .act =
@@ -189,7 +191,7 @@ std::vector<ScreenshotTour::Step> docksTourSteps(MainWindow& window) {
          .grab = [dep] { return TourShot::of(dep); },
          .cleanUp = [dep] { dep->hide(); }});
 
-    IoPanel* io = window.ioPanel();
+    IoPanel* io = window.bds5().ioPanel();
     steps.push_back({.name = QStringLiteral("io-panel"),
                      .act =
                          [&window, io] {

@@ -1,6 +1,8 @@
 // Drive tour steps: everything against the simulated drive through the session, grabbed as a user sees it.
 #include "drive_tour_steps.h"
 
+#include "families/bds5/bds5_workspace.h"
+
 #include "capture_dock.h"
 #include "capture_log.h"
 #include "debug_highlighter.h"
@@ -83,7 +85,7 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
     steps.push_back({.name = QStringLiteral("debug-load"),
                      .act =
                          [&window] {
-                             window.captureLog().start();
+                             window.bds5().captureLog().start();
                              EditorTabs& tabs = *window.editorArea()->tabs();
                              editor::ProgramEditor* editor = tabs.addEditor(QStringLiteral("NESTED.BDS"));
                              editor->setText(kProgram.join(QLatin1Char('\n')) + QLatin1Char('\n'));
@@ -145,26 +147,26 @@ std::vector<ScreenshotTour::Step> driveTourSteps(MainWindow& window) {
     steps.push_back({.name = QStringLiteral("capture"),
                      .act =
                          [&window] {
-                             window.captureDock()->setView(CaptureDock::View::Transcript);
-                             window.captureDock()->show();
-                             window.captureDock()->raise();
+                             window.bds5().captureDock()->setView(CaptureDock::View::Transcript);
+                             window.bds5().captureDock()->show();
+                             window.bds5().captureDock()->raise();
                          },
                      .ready =
                          [&window] {
-                             return driveReady(window) && window.captureDock()->isVisible() &&
-                                    window.captureDock()->shownText().contains(QStringLiteral("<^X>"));
+                             return driveReady(window) && window.bds5().captureDock()->isVisible() &&
+                                    window.bds5().captureDock()->shownText().contains(QStringLiteral("<^X>"));
                          },
                      .grab =
                          [&window] {
                              // The drive's last trace lines may still arrive after ^X and scroll it out of
                              // sight (a loaded machine): the shot shows the ^X line at the foot of the view.
-                             scrollToLast(*window.captureDock(), QStringLiteral("<^X>"));
-                             return TourShot::of(window.captureDock());
+                             scrollToLast(*window.bds5().captureDock(), QStringLiteral("<^X>"));
+                             return TourShot::of(window.bds5().captureDock());
                          },
-                     .text = [&window] { return window.captureDock()->shownText(); },
+                     .text = [&window] { return window.bds5().captureDock()->shownText(); },
                      .cleanUp =
                          [&window] {
-                             window.captureLog().stop();
+                             window.bds5().captureLog().stop();
                              window.terminalDock()->raise();
                          }});
     for (const QString& page : {QStringLiteral("communications"), QStringLiteral("drive")}) {

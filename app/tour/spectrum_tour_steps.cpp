@@ -2,6 +2,8 @@
 // makes them (bench fields, gain editors, Run Once), then the Spectrum view grabbed.
 #include "spectrum_tour_steps.h"
 
+#include "families/bds5/bds5_workspace.h"
+
 #include "scope_tour_steps.h"
 
 #include "drive_connection.h"
@@ -43,7 +45,7 @@ std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
                      .act =
                          [&window, panel, runsBefore] {
                              *runsBefore = panel->runner().runs().size();
-                             IoPanel& bench = *window.ioPanel();
+                             IoPanel& bench = *window.bds5().ioPanel();
                              bench.loadInertiaField()->setValue(kLoadInertia_kgm2);
                              bench.couplingStiffnessField()->setValue(kStiffness_NmPerRad);
                              bench.couplingDampingField()->setValue(kDamping_NmsPerRad);
@@ -72,7 +74,7 @@ std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
                          [&window, panel, view] {
                              if (*view) (*view)->close();
                              panel->gainEditor(QStringLiteral("LPF"))->findChild<QCheckBox*>()->setChecked(false);
-                             window.ioPanel()->couplingStiffnessField()->setValue(0); // rigid again
+                             window.bds5().ioPanel()->couplingStiffnessField()->setValue(0); // rigid again
                              window.connection().sendCommand(QStringLiteral("DIS"));
                          }});
     return steps;

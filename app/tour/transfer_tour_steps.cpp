@@ -1,6 +1,8 @@
 // Transfer tour steps: real transfers against the simulated drive at 9600 baud, grabbed as a user sees them.
 #include "transfer_tour_steps.h"
 
+#include "families/bds5/bds5_workspace.h"
+
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "main_window.h"
@@ -121,7 +123,7 @@ std::vector<ScreenshotTour::Step> transferTourSteps(MainWindow& window) {
                                  .arg(window.statusBar()->currentMessage());
                          }});
     steps.push_back({.name = QStringLiteral("variables-file"),
-                     .act = [&window] { window.variablesController().fromDrive(); },
+                     .act = [&window] { window.bds5().variablesController().fromDrive(); },
                      .ready =
                          [&window] {
                              return !TransferDialog::active() &&

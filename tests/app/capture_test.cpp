@@ -2,6 +2,7 @@
 // text byte for byte, and a saved .CAP opens again unchanged — also where the terminal folds a record's or
 // a tuning run's PLAY listing into one line.
 #include "app_test_support.h"
+#include "app/families/bds5/bds5_workspace.h"
 #include "app/drive/capture_dock.h"
 #include "app/drive/capture_log.h"
 #include "app/drive/drive_connection.h"
@@ -62,10 +63,10 @@ private slots:
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
 
-        app::CaptureDock* dock = window.captureDock();
+        app::CaptureDock* dock = window.bds5().captureDock();
         QVERIFY(dock->startAction()->isEnabled());
         dock->startAction()->trigger();
-        QVERIFY(window.captureLog().isCapturing());
+        QVERIFY(window.bds5().captureLog().isCapturing());
         connect(&window.connection(), &app::DriveConnection::rawSent, &window, [&sent](const QByteArray& b) { sent += b; });
         connect(&window.connection(), &app::DriveConnection::rawReceived, &window,
                 [&received](const QByteArray& b) { received += b; });
@@ -77,9 +78,9 @@ private slots:
         QTest::keyClick(window.terminal(), Qt::Key_X, Qt::ControlModifier); // ^X: not echoed by the drive
         QVERIFY(sent.endsWith('\x18')); // an urgent byte is written at once
         dock->stopAction()->trigger();
-        QVERIFY(!window.captureLog().isCapturing());
+        QVERIFY(!window.bds5().captureLog().isCapturing());
 
-        const CaptureLog& log = window.captureLog();
+        const CaptureLog& log = window.bds5().captureLog();
         QCOMPARE(log.capBytes(), received);
         QVERIFY(log.capBytes().contains("P \"CAPTURED\"\r\nCAPTURED\r\n-->P 7*6\r\n          42\r\n-->"));
         QCOMPARE(log.sentBytes(), sent.size());
@@ -114,7 +115,7 @@ private slots:
         CaptureLog loaded;
         QCOMPARE(loaded.loadCap(path), QString());
         QCOMPARE(loaded.capBytes(), log.capBytes());
-        QCOMPARE(window.captureLog().loadCap(path), QString());
+        QCOMPARE(window.bds5().captureLog().loadCap(path), QString());
         dock->setView(app::CaptureDock::View::AsSaved);
         QTRY_VERIFY(dock->shownText().startsWith(QStringLiteral("P \"CAPTURED\"\nCAPTURED\n-->P 7*6")));
         QVERIFY(!loaded.loadCap(dir.filePath(QStringLiteral("missing.cap"))).isEmpty());
@@ -126,7 +127,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(atPrompt(window), kDriveTimeoutMs);
-        window.captureDock()->startAction()->trigger();
+        window.bds5().captureDock()->startAction()->trigger();
 
         serialport::Bds5RecordPlan plan;
         plan.samples = 40;
@@ -146,7 +147,7 @@ private slots:
         QVERIFY(!window.terminal()->isFolding());
 
         // The capture keeps what the drive sent: PLAY's header and every sample.
-        const QString cap = QString::fromLatin1(window.captureLog().capBytes());
+        const QString cap = QString::fromLatin1(window.bds5().captureLog().capBytes());
         const qsizetype play = cap.indexOf(QStringLiteral("PLAY\r\nRECORD 40 2 VCMD VFB\r\n"));
         QVERIFY2(play >= 0, qPrintable(cap.right(600)));
         const qsizetype prompt = cap.indexOf(QStringLiteral("-->"), play);

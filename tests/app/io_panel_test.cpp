@@ -3,6 +3,7 @@
 // and the bench goes through SimulatorLink::control, never the serial line; a load torque on the bench is held
 // by the motor's current, and Power Cycle brings the sign-on back with the drive disabled. Plus the DEP-01.
 #include "app_test_support.h"
+#include "app/families/bds5/bds5_workspace.h"
 #include "families/bds5/dep01/dep01_panel.h"
 #include "families/bds5/dep01/dep01_screen.h"
 #include "app/drive/drive_connection.h"
@@ -63,7 +64,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::IoPanel& panel = *window.ioPanel();
+        app::IoPanel& panel = *window.bds5().ioPanel();
         panel.show();
         QVERIFY(panel.isSimulated());
         auto* session = window.connection().session();
@@ -100,7 +101,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::IoPanel& panel = *window.ioPanel();
+        app::IoPanel& panel = *window.bds5().ioPanel();
         panel.show();
         for (const char* line : {"PLIM OFF", "EN"}) window.connection().sendCommand(QString::fromLatin1(line));
         QTRY_VERIFY_WITH_TIMEOUT(panel.readoutText().startsWith(QStringLiteral("ACTIVE")), kDriveTimeoutMs);
@@ -150,7 +151,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::Dep01Panel& dep = *window.dep01Panel();
+        app::Dep01Panel& dep = *window.bds5().dep01Panel();
         dep.show();
         // DEP ON: the drive cuts its messages to the panel's 40 columns (L6102-6108).
         QTest::mouseClick(dep.depSwitch(), Qt::LeftButton);

@@ -1,6 +1,7 @@
 // The Program and Variables menus against the simulated BDS5 at 9600 baud, asserting what a user sees: the
 // terminal, the status bar, the progress dialog, new tabs, and marks at the right editor lines.
 #include "app_test_support.h"
+#include "app/families/bds5/bds5_workspace.h"
 #include "app/drive/drive_connection.h"
 #include "app/editing/editor_area.h"
 #include "app/editing/editor_tabs.h"
@@ -269,7 +270,7 @@ private slots:
         QVERIFY(w.ready());
         w.type(QStringLiteral("X7=4321"));
         QVERIFY(w.ready());
-        auto& vars = w.window.variablesController();
+        auto& vars = w.window.bds5().variablesController();
         const Result read = w.run(vars, &app::VariablesController::fromDrive);
         QVERIFY2(read.ok(), qPrintable(read.summary));
         QVERIFY(w.window.windowTitle().startsWith(QStringLiteral("drive-variables.var")));
@@ -288,9 +289,9 @@ private slots:
     void sendingAVariableFileMarksEachRefusedLine() {
         Window w;
         QVERIFY(w.ready());
-        w.window.variablesController().newVariables();
+        w.window.bds5().variablesController().newVariables();
         w.window.editor()->setText(QStringLiteral("; my set\nX1 5\nKP 99999999\nVMAX 100\nX2 6\n"));
-        const Result r = w.run(w.window.variablesController(), &app::VariablesController::sendToDrive);
+        const Result r = w.run(w.window.bds5().variablesController(), &app::VariablesController::sendToDrive);
         QCOMPARE(r.linesDone, 4);
         QCOMPARE(TransferMarkers::markedLines(*w.window.editor()), (QList<int>{3, 4}));
         QVERIFY(TransferMarkers::annotationAt(*w.window.editor(), 4).startsWith(QStringLiteral("ERR 111")));
@@ -301,7 +302,7 @@ private slots:
         QVERIFY(w.ready());
         w.type(QStringLiteral("EN"));
         QVERIFY(w.ready());
-        const Result r = w.run(w.window.variablesController(), &app::VariablesController::fromDrive);
+        const Result r = w.run(w.window.bds5().variablesController(), &app::VariablesController::fromDrive);
         QCOMPARE(r.status, Status::Refused);
         const QString shown = w.window.statusBar()->currentMessage();
         QVERIFY2(shown.contains(QStringLiteral("ERR 51")) && shown.contains(QStringLiteral("disabled")),
@@ -315,7 +316,7 @@ private slots:
         QVERIFY(w.ready());
         w.type(QStringLiteral("KP=123"));
         QVERIFY(w.ready());
-        const Result r = w.run(w.window.variablesController(), &app::VariablesController::sendStandard);
+        const Result r = w.run(w.window.bds5().variablesController(), &app::VariablesController::sendStandard);
         QVERIFY2(r.ok() && r.errors.isEmpty(), qPrintable(r.summary));
         QVERIFY(r.linesDone > 50);
         QVERIFY(w.ready());

@@ -4,6 +4,7 @@
 // the next run's spectrum lies far under the previous run's overlay there. And the view alone: the window
 // changes the plotted trace, the readout states the resolution, a weaker second capture reads lower than its
 // overlay.
+#include "app/families/bds5/bds5_workspace.h"
 #include "app/io/io_panel.h"
 #include "app/scope/gain_editor.h"
 #include "app/scope/scope_controller.h"
@@ -89,7 +90,7 @@ private slots:
         const double jm = drive_core::physics::findReferenceMotor("REF-MEDIUM")->motor.rotorInertia_kgm2;
         const double jl = 1.5e-4, stiffness = 185, damping = 0.007;
         const double resonance_hz = std::sqrt(stiffness * (1 / jm + 1 / jl)) / (2 * kPi); // 250.0 Hz
-        app::IoPanel& bench = *window.ioPanel();
+        app::IoPanel& bench = *window.bds5().ioPanel();
         bench.loadInertiaField()->setValue(jl);
         bench.couplingStiffnessField()->setValue(stiffness);
         bench.couplingDampingField()->setValue(damping);

@@ -3,6 +3,7 @@
 // edit refused before sending, a write the drive itself refuses, live polling of the rows in view, the
 // watch list and "Copy as .VAR", the search filter, and polling that pauses while a program runs (no prompt).
 #include "app_test_support.h"
+#include "app/families/bds5/bds5_workspace.h"
 #include "app/drive/drive_actions.h"
 #include "app/drive/drive_connection.h"
 #include "app/drive/terminal_widget.h"
@@ -144,7 +145,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::VariablesDock& variables = *window.variablesDock();
+        app::VariablesDock& variables = *window.bds5().variablesDock();
         variables.show();
         app::VariableBrowser& dock = *variables.browser();
         dock.reveal(QStringLiteral("X1"));
@@ -182,7 +183,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::VariablesDock& variables = *window.variablesDock();
+        app::VariablesDock& variables = *window.bds5().variablesDock();
         variables.show();
         app::VariableBrowser& dock = *variables.browser();
         QSignalSpy sent(&window.connection(), &app::DriveConnection::rawSent);
@@ -204,7 +205,7 @@ private slots:
         MainWindow window;
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
-        app::VariablesDock& variables = *window.variablesDock();
+        app::VariablesDock& variables = *window.bds5().variablesDock();
         variables.show();
         app::VariableBrowser& dock = *variables.browser();
         const QAbstractItemModel& shown = *dock.allView()->model();
@@ -225,7 +226,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(ready(window), kDriveTimeoutMs);
-        app::VariablesDock& variables = *window.variablesDock();
+        app::VariablesDock& variables = *window.bds5().variablesDock();
         variables.show();
         app::VariableBrowser& dock = *variables.browser();
         dock.reveal(QStringLiteral("VFB"));
