@@ -34,25 +34,16 @@ class MachineIdeTest : public QObject {
 
     // One line as the user types it on the axis in use; its answer accepted.
     static bool typeLine(MainWindow& window, const QString& line) {
-        if (window.activeFamily() == DriveFamily::Bds5) {
-            QSignalSpy done(window.connection().session(), &serialport::Bds5Session::finished);
-            window.connection().sendCommand(line);
-            return done.wait(kJobMs);
-        }
         serialport::DriveSession* session = window.workspace(window.activeFamily())->driveSession();
         QSignalSpy answered(session, &serialport::DriveSession::answered);
         session->sendLine(line);
         return answered.wait(kJobMs) && answered.last()[1].value<serialport::LineAnswer>().ok();
     }
     static bool connected(MainWindow& window) {
-        if (window.activeFamily() == DriveFamily::Bds5)
-            return window.connection().session() &&
-                   window.connection().session()->state() == serialport::Bds5Session::State::Ready;
         const FamilyWorkspace* w = window.workspace(window.activeFamily());
         return w->driveSession() && w->driveSession()->isReady();
     }
     static QString linkText(MainWindow& window) {
-        if (window.activeFamily() == DriveFamily::Bds5) return window.connection().linkDescription();
         const FamilyWorkspace* w = window.workspace(window.activeFamily());
         return w->link() ? w->link()->description() : QString();
     }
