@@ -26,6 +26,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 
 namespace app {
 
@@ -180,14 +181,15 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                          errors->resize(1100, 300);
                          errors->raise();
                          Pmc960StatusDock* status = pmc960(window)->statusDock();
-                         for (const char* command : {"SM0", "I4000+", "SM2", "V400", "I400000+"})
+                         for (const char* command : {"SM0", "I4000+"})
                              status->sendCommand(QString::fromLatin1(command));
                          // Each step on an event, not after a fixed time (a busy machine ran ESTOP' before the
-                         // move had started): ESTOP' once the status shows this step's move under way (after
-                         // the #B6 of the refused index, forward and past where it started: a status from the
-                         // earlier steps' moves must not count), released and the last error read once the
+                         // move had started, and once lost the move sent in one burst with the refused index):
+                         // the move once the #B6 of the refused index is in the log; ESTOP' once the status
+                         // shows that move under way (forward and past where it started: a status from the
+                         // earlier steps' moves must not count); released and the last error read once the
                          // #E0 is in the log.
-                         const int start = status->value(QStringLiteral("position")).toInt();
+                         auto start = std::make_shared<std::optional<int>>();
                          auto* sequence = new QTimer(errors);
                          sequence->setInterval(50);
                          QObject::connect(sequence, &QTimer::timeout, errors, [&window, errors, status, sequence, start] {
@@ -202,9 +204,13 @@ std::vector<ScreenshotTour::Step> pmc960TourSteps(MainWindow& window) {
                                  sequence->deleteLater();
                                  estop(window, false);
                                  errors->readHistory();
-                             } else if (!sequence->property("estop").toBool() && b6 &&
+                             } else if (b6 && !*start) {
+                                 *start = status->value(QStringLiteral("position")).toInt();
+                                 for (const char* command : {"SM2", "V400", "I400000+"})
+                                     status->sendCommand(QString::fromLatin1(command));
+                             } else if (!sequence->property("estop").toBool() && *start &&
                                         status->value(QStringLiteral("velocity")).toInt() > 0 &&
-                                        status->value(QStringLiteral("position")).toInt() > start + 1000) {
+                                        status->value(QStringLiteral("position")).toInt() > **start + 1000) {
                                  sequence->setProperty("estop", true);
                                  estop(window, true);
                              }
