@@ -135,8 +135,8 @@ void EditorTabs::applyLexer(editor::ProgramEditor* editor, FileType type) {
         editor::Bds5Language::install(*editor); // lexer, folding, diagnostics, completion, F1 help
     } else if (wanted == Mpl) {
         editor::MplLanguage::install(*editor); // MPL lexer, folding, program check, F1 help (issue 9)
-    } else {
-        editor->setLexer(nullptr);
+    } else if (!editor::LanguageSupport::of(editor)) {
+        editor->setLexer(nullptr); // plain text; a language a workspace installed (ServoBASIC) keeps its lexer
     }
     if (old && old != editor->lexer()) old->deleteLater();
 }

@@ -8,6 +8,7 @@
 #include "app/main_window.h"
 
 #include "drive_core/bds5/bds5_drive.h"
+#include "editor/language_support.h"
 #include "editor/program_editor.h"
 #include "resources/resources.h"
 
@@ -99,6 +100,15 @@ private slots:
         QCOMPARE(window.editorArea()->tabs()->tabText(0), name);
         QVERIFY(!window.editor()->isModified());
         QVERIFY(window.editor()->filePath().isEmpty()); // saving asks for a name, never writes the resource
+
+        // In its language's colours: the first line shown above is styled, not default text (the SC750's
+        // sample once lost its lexer to the tab's plain-text set-up and showed black proportional text).
+        editor::ProgramEditor* ed = window.editor();
+        QVERIFY(editor::LanguageSupport::of(ed) != nullptr);
+        QVERIFY(ed->lexer() != nullptr);
+        ed->SendScintilla(QsciScintilla::SCI_COLOURISE, 0L, -1L);
+        const long at = long(text.toUtf8().indexOf(shown.first().toUtf8()));
+        QVERIFY(ed->SendScintilla(QsciScintilla::SCI_GETSTYLEAT, at) != 0);
     }
 
     void terminalShowsSignOnThenHelloWorld() {
