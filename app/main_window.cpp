@@ -183,6 +183,7 @@ void MainWindow::addWorkspace(FamilyWorkspace* workspace) {
         if (workspace == this->workspace(m_family)) terminal()->displayBytes(bytes);
     });
     showFamily(m_family);
+    updateLinkStatus(); // "No drive" before any connection
 }
 
 FamilyWorkspace* MainWindow::workspace(drive_core::DriveFamily family) const {
