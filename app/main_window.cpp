@@ -6,7 +6,7 @@
 #include "drive/terminal_tabs.h"
 
 #include "connection_dialog.h"
-#include "debug_highlighter.h"
+#include "families/bds5/debug_highlighter.h"
 #include "document_controller.h"
 #include "editor_area.h"
 #include "family_workspace.h"

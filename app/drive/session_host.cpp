@@ -1,7 +1,7 @@
 // SessionHost: a family's workspace, or the BDS5's connection.
 #include "session_host.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "family_workspace.h"
 #include "transfer_dialog.h"
 

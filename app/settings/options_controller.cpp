@@ -1,8 +1,8 @@
 // OptionsController: applying the options and the safe cable disconnect.
 #include "options_controller.h"
 
-#include "debug_highlighter.h"
-#include "drive_connection.h"
+#include "families/bds5/debug_highlighter.h"
+#include "families/bds5/drive_connection.h"
 #include "main_window.h"
 #include "options_dialog.h"
 #include "terminal_widget.h"

@@ -1,11 +1,11 @@
 // Cursor-readout and XY tour steps: real RECORD/PLAY against the simulated drive, shown in the Scope dock.
 #include "cursors_xy_tour_steps.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "main_window.h"
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
-#include "scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 #include "transfer_dialog.h"
 
 #include "scope/scope_plot.h"

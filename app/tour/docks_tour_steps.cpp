@@ -4,13 +4,13 @@
 
 #include "families/bds5/bds5_workspace.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "main_window.h"
 
 #include "families/bds5/dep01/dep01_panel.h"
 #include "errors/error_log_dock.h"
 #include "errors/error_log_model.h"
-#include "io/io_panel.h"
+#include "families/bds5/io_panel.h"
 #include "serialport/simulator_link.h"
 #include "variables/variable_model.h"
 #include "variables/variable_browser.h"

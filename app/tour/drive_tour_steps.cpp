@@ -5,9 +5,9 @@
 
 #include "capture_dock.h"
 #include "capture_log.h"
-#include "debug_highlighter.h"
-#include "drive_actions.h"
-#include "drive_connection.h"
+#include "families/bds5/debug_highlighter.h"
+#include "families/bds5/drive_actions.h"
+#include "families/bds5/drive_connection.h"
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "help_browser.h"

@@ -1,13 +1,13 @@
 // Math and trigger tour steps: added through the Math dialog and the trigger bar as a user would.
 #include "math_trigger_tour_steps.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "main_window.h"
 #include "scope/math_channel_dialog.h"
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
 #include "scope/trigger_bar.h"
-#include "scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 #include "scope/variable_watcher.h"
 #include "scope/watch_trigger.h"
 #include "scope/watch_view.h"

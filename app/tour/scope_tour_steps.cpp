@@ -1,13 +1,13 @@
 // Scope tour steps: real RECORD/PLAY against the simulated drive at 9600 baud, grabbed as a user sees them.
 #include "scope_tour_steps.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "main_window.h"
 #include "scope/bode_view.h"
-#include "scope/gain_editor.h"
+#include "families/bds5/tuning/gain_editor.h"
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
-#include "scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 #include "transfer_dialog.h"
 
 #include "scope/scope_plot.h"

@@ -5,7 +5,7 @@
 
 #include "connection_dialog.h"
 #include "docks_tour_steps.h"
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "drive_tour_steps.h"
 #include "editor_tour_steps.h"
 #include "main_window.h"

@@ -6,13 +6,13 @@
 
 #include "scope_tour_steps.h"
 
-#include "drive_connection.h"
-#include "io/io_panel.h"
+#include "families/bds5/drive_connection.h"
+#include "families/bds5/io_panel.h"
 #include "main_window.h"
-#include "scope/gain_editor.h"
+#include "families/bds5/tuning/gain_editor.h"
 #include "scope/scope_controller.h"
 #include "scope/spectrum_view.h"
-#include "scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>

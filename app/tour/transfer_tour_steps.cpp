@@ -6,11 +6,11 @@
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "main_window.h"
-#include "program_controller.h"
+#include "families/bds5/program_controller.h"
 #include "terminal_widget.h"
 #include "transfer_dialog.h"
 #include "transfer_markers.h"
-#include "variables_controller.h"
+#include "families/bds5/variables_controller.h"
 
 #include "editor/program_editor.h"
 

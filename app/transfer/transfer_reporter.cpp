@@ -1,7 +1,7 @@
 // TransferReporter: status bar, terminal notices and new tabs for transfers.
 #include "transfer_reporter.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "editor_area.h"
 #include "editor_tabs.h"
 #include "main_window.h"

@@ -2,7 +2,7 @@
 // catalog), how to read and write them, the test moves of its manual's tuning procedure, and what the
 // bench's oscilloscope watches. The SC750 (KVP/KVI/KPP/KVFF/ARF0/ARF1/ILC, DACMON on DACMAP 1) and the PMC-960
 // (TG table: VLGAIN TGV, VLCOMP TGB, PLGAIN TGP, PLCOMP TGE, FFGAIN TGF, TGAIN TGT, ALGAIN TGL; the tach, §4.8).
-// The BDS5 tunes through RECORD/PLAY (app/scope/tuning_runner.h) and has no profile here. Pure values.
+// The BDS5 tunes through RECORD/PLAY (app/families/bds5/tuning/tuning_runner.h) and has no profile here. Pure values.
 #pragma once
 
 #include "drive_core/drive.h"

@@ -1,6 +1,6 @@
 #pragma once
 // What the app tests share: how long a drive may take to answer, and when the simulated BDS5 takes a line.
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "serialport/bds5_session.h"
 

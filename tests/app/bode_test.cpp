@@ -3,11 +3,11 @@
 // Variables polls PFB while J 100 runs, the chart's values rise, the label shows a positive rate, and Stop
 // puts no more P on the wire.
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/bode_view.h"
 #include "app/scope/scope_controller.h"
-#include "app/scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 #include "app/scope/variable_watcher.h"
 #include "app/scope/watch_view.h"
 

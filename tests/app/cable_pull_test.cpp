@@ -3,7 +3,7 @@
 // the connection says it is lost and keeps trying, the window keeps the editor's text and shows the state;
 // when the simulator comes back on the same name the connection reopens by itself and works again. The
 // SC750 and PMC-960 workspaces reconnect the same way (LinkReconnector).
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "families/pmc960/pmc960_workspace.h"
 

@@ -5,13 +5,13 @@
 #include "app/families/bds5/bds5_workspace.h"
 #include "app/drive/capture_dock.h"
 #include "app/drive/capture_log.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "app/drive/terminal_widget.h"
-#include "app/scope/play_terminal_fold.h"
+#include "families/bds5/record/play_terminal_fold.h"
 #include "app/scope/scope_controller.h"
-#include "app/scope/tuning_panel.h"
-#include "app/scope/tuning_runner.h"
+#include "families/bds5/tuning/tuning_panel.h"
+#include "families/bds5/tuning/tuning_runner.h"
 
 #include "serialport/bds5_session.h"
 

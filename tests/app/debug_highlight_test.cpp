@@ -2,12 +2,12 @@
 // the editor highlights exactly the lines of the manual's trace (L5688-5699), and the mark goes when another
 // family is chosen. Also the pieces: the stream parser and the line matching.
 #include "app_test_support.h"
-#include "app/drive/debug_highlighter.h"
-#include "app/drive/drive_actions.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/debug_highlighter.h"
+#include "families/bds5/drive_actions.h"
+#include "families/bds5/drive_connection.h"
 #include "app/drive/line_locator.h"
 #include "app/main_window.h"
-#include "app/drive/step_trace_parser.h"
+#include "families/bds5/step_trace_parser.h"
 #include "app/drive/terminal_widget.h"
 
 #include "editor/program_editor.h"

@@ -3,7 +3,7 @@
 // would): the family's workspace comes up connected and its drive answers. The connection dialog refuses a
 // device server's address without a port, says why, and keeps what was typed.
 #include "app/drive/connection_dialog.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "families/pmc960/pmc960_workspace.h"
 #include "families/sc750/sc750_workspace.h"

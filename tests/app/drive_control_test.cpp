@@ -2,9 +2,9 @@
 // restarts, capped), ^X overtaking a long queue of commands and stopping motion in time, the Drive
 // actions following the drive's mode, and Run Label offering the labels of the program in the editor.
 #include "app_test_support.h"
-#include "app/drive/drive_actions.h"
-#include "app/drive/drive_connection.h"
-#include "app/drive/run_label_dialog.h"
+#include "families/bds5/drive_actions.h"
+#include "families/bds5/drive_connection.h"
+#include "families/bds5/run_label_dialog.h"
 #include "app/main_window.h"
 #include "app/drive/terminal_widget.h"
 

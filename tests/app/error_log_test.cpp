@@ -2,7 +2,7 @@
 // drive reports while the IDE watches, go-to-line for a program error, ERR CLR and CSV export — against the
 // simulated BDS5. Plus the scanner that tells a drive's error from a listing that merely looks like one.
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/editing/editor_area.h"
 #include "app/errors/error_log_dock.h"
 #include "app/errors/error_log_model.h"

@@ -6,7 +6,7 @@
 #include "app/command_line.h"
 #include "app/drive/connection_choice.h"
 #include "app/drive/connection_dialog.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/drive/family_workspace.h"
 #include "app/drive/terminal_widget.h"
 #include "app/main_window.h"

@@ -6,8 +6,8 @@
 #include "app/families/bds5/bds5_workspace.h"
 #include "families/bds5/dep01/dep01_panel.h"
 #include "families/bds5/dep01/dep01_screen.h"
-#include "app/drive/drive_connection.h"
-#include "app/io/io_panel.h"
+#include "families/bds5/drive_connection.h"
+#include "families/bds5/io_panel.h"
 #include "app/main_window.h"
 
 #include "drive_core/bds5/bds5_drive.h"

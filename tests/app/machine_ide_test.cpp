@@ -4,7 +4,7 @@
 // value back, a second change is undone by Restore, and Compare is then clean.
 #include "main_window.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "family_workspace.h"
 #include "families/sc750/sc750_workspace.h"
 #include "machine/axes_dock.h"

@@ -1,7 +1,7 @@
 // MainWindow against the simulated BDS5: what a user sees on start-up and after typing in the terminal; and
 // that every family starts with its own sample program (servodesk --drive sc750 showed the BDS5's hello.bds).
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/drive/terminal_widget.h"
 #include "app/editing/editor_area.h"
 #include "app/editing/editor_tabs.h"

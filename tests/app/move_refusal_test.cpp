@@ -5,11 +5,11 @@
 // would pass the soft limits the panel asks, turns PLIM off for the test only when told to, and runs nothing
 // when cancelled.
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
-#include "app/scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 
 #include "scope/scope_plot.h"
 

@@ -2,7 +2,7 @@
 // cable disconnect and reconnect), and the help browser shows the catalog's words for VMAX, ERR 25, MA.
 #include "app_test_support.h"
 #include "app/settings/app_options.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/help/help_browser.h"
 #include "app/main_window.h"
 #include "app/settings/options_controller.h"

@@ -2,15 +2,15 @@
 // terminal, the status bar, the progress dialog, new tabs, and marks at the right editor lines.
 #include "app_test_support.h"
 #include "app/families/bds5/bds5_workspace.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/editing/editor_area.h"
 #include "app/editing/editor_tabs.h"
 #include "app/main_window.h"
-#include "app/transfer/program_controller.h"
+#include "families/bds5/program_controller.h"
 #include "app/drive/terminal_widget.h"
 #include "app/transfer/transfer_dialog.h"
 #include "app/transfer/transfer_markers.h"
-#include "app/transfer/variables_controller.h"
+#include "families/bds5/variables_controller.h"
 
 #include "editor/program_editor.h"
 

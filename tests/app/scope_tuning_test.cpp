@@ -5,13 +5,13 @@
 // keeps the previous run as an overlay, with KV changing the response as the loop's physics predicts. TUNE is
 // checked against the bandwidth it was asked for.
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
-#include "app/scope/gain_editor.h"
+#include "families/bds5/tuning/gain_editor.h"
 #include "app/scope/measurements_table.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
-#include "app/scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 
 #include "scope/scope_plot.h"
 

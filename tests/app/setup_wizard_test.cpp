@@ -5,8 +5,8 @@
 // Motor Setup page swaps the simulated motor (its ICONT read anew, the I/O panel showing the same motor). Every
 // page shows "Step N of M" in the same header.
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
-#include "app/io/io_panel.h"
+#include "families/bds5/drive_connection.h"
+#include "families/bds5/io_panel.h"
 #include "app/main_window.h"
 #include "app/variables/variable_model.h"
 #include "families/bds5/wizard/bench_page.h"

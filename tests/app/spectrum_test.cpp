@@ -5,12 +5,12 @@
 // changes the plotted trace, the readout states the resolution, a weaker second capture reads lower than its
 // overlay.
 #include "app/families/bds5/bds5_workspace.h"
-#include "app/io/io_panel.h"
-#include "app/scope/gain_editor.h"
+#include "families/bds5/io_panel.h"
+#include "families/bds5/tuning/gain_editor.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
 #include "app/scope/spectrum_view.h"
-#include "app/scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 #include "app_test_support.h"
 
 #include "drive_core/physics/motor_parameters.h"

@@ -1,7 +1,7 @@
 // TerminalWidget: what the user sees for the bytes a drive sends, and the bytes their keys send; that the
 // newest line stays in view through hiding and resizing unless the user scrolled up; folded PLAY listings.
 #include "app/drive/terminal_widget.h"
-#include "app/scope/play_terminal_fold.h"
+#include "families/bds5/record/play_terminal_fold.h"
 
 #include <QScrollBar>
 #include <QSignalSpy>

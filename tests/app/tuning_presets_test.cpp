@@ -3,12 +3,12 @@
 // warns, the position-step preset moves by its amplitude and back, as the recorded PCMD and PFB show, and the
 // amplitude, once proposed, stays while the gains change (issue 19: runs compared one move).
 #include "app_test_support.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
-#include "app/scope/gain_editor.h"
+#include "families/bds5/tuning/gain_editor.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
-#include "app/scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 
 #include "scope/scope_plot.h"
 

@@ -4,8 +4,8 @@
 // watch list and "Copy as .VAR", the search filter, and polling that pauses while a program runs (no prompt).
 #include "app_test_support.h"
 #include "app/families/bds5/bds5_workspace.h"
-#include "app/drive/drive_actions.h"
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_actions.h"
+#include "families/bds5/drive_connection.h"
 #include "app/drive/terminal_widget.h"
 #include "app/main_window.h"
 #include "app/variables/variable_model.h"

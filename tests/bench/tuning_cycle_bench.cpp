@@ -3,10 +3,10 @@
 // test move, PLAY, parse, measure, plot) is printed with its ideal — the record's duration plus the PLAY
 // listing's bytes on the wire — and their ratio. Goal: ratio <= 1.5. Prints figures; asserts nothing on time.
 // Run: build/tests/bench/tuning_cycle_bench
-#include "app/drive/drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/scope_controller.h"
-#include "app/scope/tuning_panel.h"
+#include "families/bds5/tuning/tuning_panel.h"
 
 #include <QApplication>
 #include <QStandardPaths>

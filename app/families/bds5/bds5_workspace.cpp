@@ -7,17 +7,17 @@
 
 #include "drive/capture_dock.h"
 #include "drive/capture_log.h"
-#include "drive/drive_actions.h"
-#include "drive/drive_connection.h"
+#include "drive_actions.h"
+#include "drive_connection.h"
 #include "drive/session_host.h"
 #include "drive/terminal_dock.h"
-#include "io/io_panel.h"
+#include "io_panel.h"
 #include "main_window.h"
 #include "resources/resources.h"
 #include "scope/scope_controller.h"
 #include "serialport/bds5_protocol.h"
-#include "transfer/program_controller.h"
-#include "transfer/variables_controller.h"
+#include "program_controller.h"
+#include "variables_controller.h"
 #include "variables/variables_dock.h"
 
 #include <QMenu>

@@ -1,7 +1,7 @@
 // Dep01Panel: display and keypad over the drive connection.
 #include "dep01_panel.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 
 #include <QCheckBox>
 #include <QGridLayout>

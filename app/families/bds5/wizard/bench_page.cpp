@@ -1,7 +1,7 @@
 // BenchPage: commands, live readout, answers.
 #include "bench_page.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "variables/variable_model.h"
 
 #include "drive_core/catalog/bds5_catalog.h"

@@ -1,7 +1,7 @@
 // MotorChoice: reference motors on the simulator's bench; fixed by the hardware on a real drive.
 #include "motor_choice.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 
 #include "drive_core/physics/motor_parameters.h"
 #include "serialport/simulator_link.h"

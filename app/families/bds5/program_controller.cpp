@@ -1,14 +1,14 @@
 // ProgramController: the Program menu and its transfers.
 #include "program_controller.h"
 
-#include "app_options.h"
-#include "document_controller.h"
+#include "settings/app_options.h"
+#include "editing/document_controller.h"
 #include "drive_connection.h"
-#include "editor_area.h"
+#include "editing/editor_area.h"
 #include "main_window.h"
-#include "transfer_dialog.h"
-#include "transfer_markers.h"
-#include "transfer_reporter.h"
+#include "transfer/transfer_dialog.h"
+#include "transfer/transfer_markers.h"
+#include "transfer/transfer_reporter.h"
 
 #include "drive_core/bds5/bds5_checker.h"
 #include "editor/program_editor.h"

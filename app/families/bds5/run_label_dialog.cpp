@@ -3,7 +3,7 @@
 
 #include "drive_core/bds5/bds5_program.h"
 #include "editor/bds5_outline.h"
-#include "theme.h"
+#include "settings/theme.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

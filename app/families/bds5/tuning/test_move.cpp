@@ -1,7 +1,7 @@
 // TestMove: presets -> RECORD plans.
 #include "test_move.h"
 
-#include "scope_catalog.h"
+#include "families/bds5/record/scope_catalog.h"
 
 #include "drive_core/bds5/bds5_loop_scaling.h"
 #include "drive_core/bds5/bds5_servo.h"

@@ -1,7 +1,7 @@
 // PlayTerminalFold: which lines of a PLAY listing are folded, and the line that stands for them.
 #include "play_terminal_fold.h"
 
-#include "terminal_widget.h"
+#include "drive/terminal_widget.h"
 
 #include "serialport/bds5_record_play.h"
 

@@ -4,7 +4,7 @@
 #include "drive_connection.h"
 #include "main_window.h"
 #include "run_label_dialog.h"
-#include "terminal_widget.h"
+#include "drive/terminal_widget.h"
 
 #include "editor/program_editor.h"
 

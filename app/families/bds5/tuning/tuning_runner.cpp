@@ -1,8 +1,8 @@
 // TuningRunner: gains, runs and TUNE over the session.
 #include "tuning_runner.h"
 
-#include "drive_connection.h"
-#include "scope_catalog.h"
+#include "families/bds5/drive_connection.h"
+#include "families/bds5/record/scope_catalog.h"
 #include "soft_limits.h"
 
 #include "scope/play_parser.h"

@@ -3,11 +3,11 @@
 
 #include "app/tuning/tuning_frame.h"
 
-#include "drive_connection.h"
+#include "families/bds5/drive_connection.h"
 #include "gain_editor.h"
 #include "main_window.h"
-#include "scope_controller.h"
-#include "scope_view.h"
+#include "app/scope/scope_controller.h"
+#include "app/scope/scope_view.h"
 
 #include <QComboBox>
 #include <QFile>

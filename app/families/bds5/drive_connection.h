@@ -5,8 +5,8 @@
 // so views never hold a pointer to a link or session that may be replaced. GUI thread only.
 #pragma once
 
-#include "connection_choice.h"
-#include "link_reconnector.h"
+#include "drive/connection_choice.h"
+#include "drive/link_reconnector.h"
 
 #include "serialport/bds5_drive_session.h"
 #include "serialport/link.h"

@@ -2,7 +2,7 @@
 #include "debug_highlighter.h"
 
 #include "drive_connection.h"
-#include "line_locator.h"
+#include "drive/line_locator.h"
 #include "main_window.h"
 
 #include "editor/program_editor.h"

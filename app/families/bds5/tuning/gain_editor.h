@@ -3,7 +3,7 @@
 // (Enter, arrows, slider release), never per keystroke. GUI thread only.
 #pragma once
 
-#include "scope_catalog.h"
+#include "families/bds5/record/scope_catalog.h"
 
 #include <QWidget>
 

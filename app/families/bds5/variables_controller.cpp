@@ -1,14 +1,14 @@
 // VariablesController: the Variables menu and its transfers.
 #include "variables_controller.h"
 
-#include "document_controller.h"
+#include "editing/document_controller.h"
 #include "drive_connection.h"
-#include "editor_area.h"
-#include "editor_tabs.h"
+#include "editing/editor_area.h"
+#include "editing/editor_tabs.h"
 #include "main_window.h"
-#include "transfer_dialog.h"
-#include "transfer_markers.h"
-#include "transfer_reporter.h"
+#include "transfer/transfer_dialog.h"
+#include "transfer/transfer_markers.h"
+#include "transfer/transfer_reporter.h"
 
 #include "editor/program_editor.h"
 #include "resources/resources.h"
