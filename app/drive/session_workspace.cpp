@@ -5,7 +5,8 @@
 #include "main_window.h"
 #include "scope/session_watch_source.h"
 #include "scope/watch_view.h"
-#include "tuning/family_tuning_panel.h"
+#include "tuning/family_tuning_dock.h"
+#include "tuning/tuning_panel.h"
 
 #include "serialport/drive_session.h"
 #include "serialport/link.h"
@@ -42,7 +43,7 @@ WatchView* SessionWorkspace::watchVariables() {
 }
 
 void SessionWorkspace::attachTuning(bool on) {
-    if (m_tuning.panel) m_tuning.panel->attach(on ? m_drive.get() : nullptr, on ? m_link.get() : nullptr);
+    if (m_tuning.panel) app::attachTuning(*m_tuning.panel, on ? m_drive.get() : nullptr, on ? m_link.get() : nullptr);
 }
 
 void SessionWorkspace::activate(const ConnectionChoice& choice) {

@@ -15,7 +15,9 @@
 #include "terminal_dock.h"
 #include "transfer_dialog.h"
 #include "transfer_reporter.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "terminal_tabs.h"
 #include "session_watch_source.h"
 #include "watch_view.h"
@@ -58,7 +60,7 @@ std::vector<std::string> toStd(const QStringList& lines) {
 ScopeController::ScopeController(MainWindow& window)
     : QObject(&window), m_window(window), m_menu(new QMenu(tr("S&cope"), &window)),
       m_scopeDock(new QDockWidget(tr("Scope"), &window)), m_tuningDock(new QDockWidget(tr("Tuning"), &window)),
-      m_view(new ScopeView(m_scopeDock)), m_tuning(new TuningPanel(window, m_tuningDock)),
+      m_view(new ScopeView(m_scopeDock)), m_tuning(makeBds5TuningPanel(window.connection(), m_tuningDock)),
       m_spectrum(new SpectrumView(&window)) {
     m_menu->setObjectName(QStringLiteral("scopeMenu"));
     m_scopeDock->setObjectName(QStringLiteral("scopeDock"));
@@ -95,12 +97,12 @@ ScopeController::ScopeController(MainWindow& window)
     connect(this, &ScopeController::captureShown, m_spectrum, &SpectrumView::showCapture);
     m_spectrum->setDerivedChannels([this](const scope::Capture& c) { return m_view->withMath(c); });
     connect(m_view, &ScopeView::mathChannelsChanged, m_spectrum, &SpectrumView::refresh);
-    connect(&m_tuning->runner(), &TuningRunner::runFinished, m_spectrum,
+    connect(&tuningRunner(), &TuningRunner::runFinished, m_spectrum,
             [this](const TuningRun& run) { m_spectrum->showCapture(run.capture); });
-    connect(&m_tuning->runner(), &TuningRunner::runFinished, this,
+    connect(&tuningRunner(), &TuningRunner::runFinished, this,
             [this](const TuningRun& run) { keepForBode(run.capture); });
     // Each run's PLAY listing would put 250-300 lines in the terminal: one line stands for them.
-    connect(&m_tuning->runner(), &TuningRunner::recordStarted, this, [this](serialport::Bds5RecordPlay* record) {
+    connect(&tuningRunner(), &TuningRunner::recordStarted, this, [this](serialport::Bds5RecordPlay* record) {
         new PlayTerminalFold(*record, *m_window.terminal(), tr("Tuning panel"));
     });
 }
@@ -121,6 +123,10 @@ BodeView* ScopeController::frequencyResponse() {
     m_bode->show();
     m_bode->raise();
     return m_bode;
+}
+
+TuningRunner& ScopeController::tuningRunner() const {
+    return m_tuning->runner<TuningRunner>();
 }
 
 SpectrumView* ScopeController::spectrum() {

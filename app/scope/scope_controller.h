@@ -26,6 +26,7 @@ class MainWindow;
 class ScopeView;
 class WatchView;
 class TuningPanel;
+class TuningRunner;
 
 class ScopeController final : public QObject {
     Q_OBJECT
@@ -37,6 +38,7 @@ public:
     QDockWidget* tuningDock() const { return m_tuningDock; }
     ScopeView* view() const { return m_view; }
     TuningPanel* tuningPanel() const { return m_tuning; }
+    TuningRunner& tuningRunner() const; // the BDS5's, behind the panel
     const std::optional<scope::Capture>& lastCapture() const { return m_last; }
     ScopeExport* exporter() const { return m_export; } // whole record or visible range (Export Range)
 

@@ -5,7 +5,9 @@
 #include "main_window.h"
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "transfer_dialog.h"
 
 #include "scope/scope_plot.h"
@@ -30,7 +32,7 @@ serialport::Bds5RecordPlan step(const QStringList& variables) {
 
 void enableAndRecord(MainWindow& window, const QStringList& variables) {
     // The factory PMAX/PMIN (+-100 counts) would stop the jog at once (ERR 23): PLIM off first.
-    window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0);
+    window.scopeController().tuningRunner().setGain(QStringLiteral("PLIM"), 0);
     window.connection().sendCommand(QStringLiteral("EN"));
     window.scopeController().record(step(variables));
 }

@@ -7,7 +7,9 @@
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
 #include "scope/trigger_bar.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "scope/variable_watcher.h"
 #include "scope/watch_trigger.h"
 #include "scope/watch_view.h"
@@ -69,7 +71,7 @@ std::vector<ScreenshotTour::Step> mathTriggerTourSteps(MainWindow& window) {
         {.name = QStringLiteral("watch-trigger"),
          .act =
              [&window, &scope, run] {
-                 scope.tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0); // a jog past PMAX
+                 scope.tuningRunner().setGain(QStringLiteral("PLIM"), 0); // a jog past PMAX
                  window.connection().sendCommand(QStringLiteral("EN"));
                  WatchView* view = run->view = scope.watchVariables();
                  view->resize(1000, 560);

@@ -4,10 +4,11 @@
 #include "families/bds5/drive_connection.h"
 #include "main_window.h"
 #include "scope/bode_view.h"
-#include "families/bds5/tuning/gain_editor.h"
 #include "scope/scope_controller.h"
 #include "scope/scope_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "transfer_dialog.h"
 
 #include "scope/scope_plot.h"
@@ -38,18 +39,18 @@ ScreenshotTour::Step tuningRun(MainWindow& window, const QString& name, int runs
     ScreenshotTour::Step step;
     step.name = name;
     step.act = [panel, kv] {
-        if (kv > 0) panel->gainEditor(QStringLiteral("KV"))->spinBox()->setValue(kv);
-        panel->runner().runOnce();
+        if (kv > 0) panel->gainEditor(QStringLiteral("KV"))->setValue(kv);
+        panel->runner<app::TuningRunner>().runOnce();
     };
-    step.ready = [panel, runs] { return panel->runner().runs().size() >= runs && !panel->runner().isRunning(); };
+    step.ready = [panel, runs] { return panel->runner<app::TuningRunner>().runs().size() >= runs && !panel->runner<app::TuningRunner>().isRunning(); };
     return step;
 }
 
 } // namespace
 
 void setVelocityStep(MainWindow& window, TuningPanel& panel, int amplitude) {
-    panel.runner().setGain(QStringLiteral("KV"), 2000);
-    panel.runner().setGain(QStringLiteral("PL"), 0);
+    panel.runner<app::TuningRunner>().setGain(QStringLiteral("KV"), 2000);
+    panel.runner<app::TuningRunner>().setGain(QStringLiteral("PL"), 0);
     // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
     for (const char* line : {"DIS", "AMAX=1000000", "ACC=1000000", "EN"})
         window.connection().sendCommand(QString::fromLatin1(line));
@@ -57,7 +58,7 @@ void setVelocityStep(MainWindow& window, TuningPanel& panel, int amplitude) {
     move.kind = TestMove::Kind::FrequencyStep;
     move.amplitude = amplitude;
     move.durationMs = 400;
-    panel.setTestMove(move);
+    app::setTestMove(panel, move);
 }
 
 std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
@@ -68,7 +69,7 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
                          [&window, &scope] {
                              // As the manual's remedy for ERR 23 says: the factory PMAX/PMIN (+-100 counts)
                              // would stop a jog at once.
-                             window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0);
+                             window.scopeController().tuningRunner().setGain(QStringLiteral("PLIM"), 0);
                              window.connection().sendCommand(QStringLiteral("EN"));
                              scope.record(tourStep());
                          },
@@ -102,7 +103,7 @@ std::vector<ScreenshotTour::Step> scopeTourSteps(MainWindow& window) {
         dock->show();
         TestMove move;
         move.durationMs = 80;
-        panel->setTestMove(move);
+        app::setTestMove(*panel, move);
         runFirst();
     };
     steps.push_back(first);

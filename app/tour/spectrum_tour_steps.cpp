@@ -9,10 +9,11 @@
 #include "families/bds5/drive_connection.h"
 #include "families/bds5/io_panel.h"
 #include "main_window.h"
-#include "families/bds5/tuning/gain_editor.h"
 #include "scope/scope_controller.h"
 #include "scope/spectrum_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -37,30 +38,30 @@ std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
     auto runsBefore = std::make_shared<qsizetype>(0);
     auto runDone = [panel, runsBefore](qsizetype more) {
         return [panel, runsBefore, more] {
-            return panel->runner().runs().size() >= *runsBefore + more && !panel->runner().isRunning();
+            return panel->runner<app::TuningRunner>().runs().size() >= *runsBefore + more && !panel->runner<app::TuningRunner>().isRunning();
         };
     };
     std::vector<ScreenshotTour::Step> steps;
     steps.push_back({.name = QStringLiteral("spectrum-run-1"),
                      .act =
                          [&window, panel, runsBefore] {
-                             *runsBefore = panel->runner().runs().size();
+                             *runsBefore = panel->runner<app::TuningRunner>().runs().size();
                              IoPanel& bench = *window.bds5().ioPanel();
                              bench.loadInertiaField()->setValue(kLoadInertia_kgm2);
                              bench.couplingStiffnessField()->setValue(kStiffness_NmPerRad);
                              bench.couplingDampingField()->setValue(kDamping_NmsPerRad);
-                             panel->runner().setGain(QStringLiteral("PLIM"), 0);
+                             panel->runner<app::TuningRunner>().setGain(QStringLiteral("PLIM"), 0);
                              setVelocityStep(window, *panel, 300); // as scope-bode
-                             panel->runner().runOnce();
+                             panel->runner<app::TuningRunner>().runOnce();
                          },
                      .ready = runDone(1)});
     auto view = std::make_shared<QPointer<SpectrumView>>();
     steps.push_back({.name = QStringLiteral("spectrum"),
                      .act =
                          [panel] {
-                             panel->gainEditor(QStringLiteral("LPFHZ"))->spinBox()->setValue(kLpfHz);
-                             panel->gainEditor(QStringLiteral("LPF"))->findChild<QCheckBox*>()->setChecked(true);
-                             panel->runner().runOnce();
+                             panel->gainEditor(QStringLiteral("LPFHZ"))->setValue(kLpfHz);
+                             panel->gainSwitch(QStringLiteral("LPF"))->setChecked(true);
+                             panel->runner<app::TuningRunner>().runOnce();
                          },
                      .ready =
                          [&scope, view, done = runDone(2)] {
@@ -73,7 +74,7 @@ std::vector<ScreenshotTour::Step> spectrumTourSteps(MainWindow& window) {
                      .cleanUp =
                          [&window, panel, view] {
                              if (*view) (*view)->close();
-                             panel->gainEditor(QStringLiteral("LPF"))->findChild<QCheckBox*>()->setChecked(false);
+                             panel->gainSwitch(QStringLiteral("LPF"))->setChecked(false);
                              window.bds5().ioPanel()->couplingStiffnessField()->setValue(0); // rigid again
                              window.connection().sendCommand(QStringLiteral("DIS"));
                          }});

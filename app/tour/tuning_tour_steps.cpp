@@ -6,7 +6,8 @@
 #include "family_workspace.h"
 #include "main_window.h"
 #include "scope/bode_view.h"
-#include "tuning/family_tuning_panel.h"
+#include "app/tuning/family_tuning_runner.h"
+#include "app/tuning/tuning_panel.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -20,15 +21,15 @@
 namespace app {
 
 namespace {
-FamilyTuningPanel* panelOf(MainWindow& window, drive_core::DriveFamily family) {
+TuningPanel* panelOf(MainWindow& window, drive_core::DriveFamily family) {
     FamilyWorkspace* ws = window.workspace(family);
     if (!ws) return nullptr;
     for (QDockWidget* dock : ws->docks())
-        if (auto* panel = qobject_cast<FamilyTuningPanel*>(dock->widget())) return panel;
+        if (auto* panel = qobject_cast<TuningPanel*>(dock->widget())) return panel;
     return nullptr;
 }
 
-QDockWidget* dockOf(FamilyTuningPanel* panel) {
+QDockWidget* dockOf(TuningPanel* panel) {
     return panel ? qobject_cast<QDockWidget*>(panel->parentWidget()) : nullptr;
 }
 
@@ -45,7 +46,7 @@ ScreenshotTour::Step tuningStep(MainWindow& window, drive_core::DriveFamily fami
                     for (QMenu* menu : window.workspace(family)->menus())
                         for (QAction* a : menu->actions())
                             if (a->text() == QStringLiteral("Tuning &Panel")) a->trigger();
-                    FamilyTuningPanel* panel = panelOf(window, family);
+                    TuningPanel* panel = panelOf(window, family);
                     QDockWidget* dock = dockOf(panel);
                     dock->setFloating(true);
                     dock->resize(1240, 600);
@@ -55,9 +56,9 @@ ScreenshotTour::Step tuningStep(MainWindow& window, drive_core::DriveFamily fami
             // has confirmed them, raise the gain, run again (the run queues behind the gain's write).
             .ready =
                 [&window, family, first, gain, raised, stage] {
-                    FamilyTuningPanel* panel = panelOf(window, family);
+                    TuningPanel* panel = panelOf(window, family);
                     if (!panel || !window.workspace(family)->isConnected()) return false;
-                    FamilyTuningRunner& runner = panel->runner();
+                    FamilyTuningRunner& runner = panel->runner<app::FamilyTuningRunner>();
                     const QString confirmed = QStringLiteral("\u2713");
                     switch (*stage) {
                     case 0:
@@ -90,8 +91,8 @@ ScreenshotTour::Step tuningStep(MainWindow& window, drive_core::DriveFamily fami
                     window.connectDrive(ConnectionChoice::simulator(drive_core::DriveFamily::Bds5));
                 },
             .state = [&window, family] {
-                FamilyTuningPanel* panel = panelOf(window, family);
-                return panel ? QStringLiteral("%1 run(s); %2").arg(panel->runner().runs().size()).arg(panel->statusText())
+                TuningPanel* panel = panelOf(window, family);
+                return panel ? QStringLiteral("%1 run(s); %2").arg(panel->runner<app::FamilyTuningRunner>().runs().size()).arg(panel->statusText())
                              : QStringLiteral("no tuning panel");
             }};
 }
@@ -102,7 +103,7 @@ ScreenshotTour::Step bodeStep(MainWindow& window, drive_core::DriveFamily family
     return {.name = name,
             .act =
                 [&window, family] {
-                    FamilyTuningPanel* panel = panelOf(window, family);
+                    TuningPanel* panel = panelOf(window, family);
                     panel->runsTable()->clearSelection();
                     panel->runsTable()->setCurrentItem(nullptr);
                     panel->frequencyResponse()->resize(760, 600);
@@ -120,7 +121,7 @@ ScreenshotTour::Step bodeStep(MainWindow& window, drive_core::DriveFamily family
 std::vector<ScreenshotTour::Step> tuningTourSteps(MainWindow& window) {
     std::vector<ScreenshotTour::Step> steps;
     if (!panelOf(window, drive_core::DriveFamily::Sc750) || !panelOf(window, drive_core::DriveFamily::Pmc960)) return steps;
-    FamilyTuningPanel* sc750 = panelOf(window, drive_core::DriveFamily::Sc750);
+    TuningPanel* sc750 = panelOf(window, drive_core::DriveFamily::Sc750);
     const double kvp = sc750->gainEditor(QStringLiteral("KVP"))->value(); // the catalog's power-up value until read
     steps.push_back(tuningStep(window, drive_core::DriveFamily::Sc750, QStringLiteral("sc750-tuning"),
                                {{QStringLiteral("KVFF"), 100}}, QStringLiteral("KVP"), 2 * std::max(kvp, 0.087)));

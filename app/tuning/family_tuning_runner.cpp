@@ -1,6 +1,8 @@
 // FamilyTuningRunner: the runs' sequence (prepare, start, hold, back, settle, capture, measure) and the gains.
 #include "family_tuning_runner.h"
 
+#include "tuning_frame.h"
+
 #include "serialport/drive_session.h"
 #include "serialport/simulator_link.h"
 #include "serialport/watch_poller.h"
@@ -17,7 +19,7 @@ constexpr int kClockPollMs = 2; // how often a wait looks at the drive's clock
 } // namespace
 
 FamilyTuningRunner::FamilyTuningRunner(TuningProfile profile, QObject* parent)
-    : QObject(parent), m_profile(std::move(profile)) {
+    : Tuner(parent), m_profile(std::move(profile)) {
     m_amplitude = m_profile.moves.value(0).amplitude;
     m_wait.setInterval(kClockPollMs);
     connect(&m_wait, &QTimer::timeout, this, [this] {
@@ -108,8 +110,12 @@ void FamilyTuningRunner::setGain(const QString& name, double value) {
         [this, name, value](const QList<serialport::LineAnswer>&) {
             m_gains[name] = value;
             emit gainConfirmed(name, value);
+            emit gainAnswered(name, value, {});
         },
-        [this, name](const QString& why) { emit gainRefused(name, why); });
+        [this, name, value](const QString& why) {
+            emit gainRefused(name, why);
+            emit gainAnswered(name, value, why);
+        });
 }
 
 void FamilyTuningRunner::readGains() {
@@ -119,6 +125,7 @@ void FamilyTuningRunner::readGains() {
             const QMap<QString, double> read = m_profile.parseGains(answers);
             for (auto it = read.begin(); it != read.end(); ++it) m_gains[it.key()] = it.value();
             emit gainsRead(read);
+            emit gainValuesRead(read);
         },
         [this](const QString& why) { emit message(tr("Reading the gains failed: %1").arg(why)); });
 }
@@ -262,6 +269,7 @@ void FamilyTuningRunner::finishRun(scope::Capture capture, const QString& source
     m_runs.append(run);
     m_running = false;
     emit runFinished(m_runs.back());
+    emit runShown(rowOf(m_runs.back()));
     if (m_continuous) return startRun();
     emit stateChanged();
 }
@@ -272,7 +280,7 @@ void FamilyTuningRunner::fail(const QString& why) {
     m_then = {};
     const bool was = m_running;
     m_running = m_continuous = false;
-    emit runFailed(why);
+    emit runFailed(tr("Not run: %1").arg(why));
     if (was) emit stateChanged();
 }
 
@@ -284,6 +292,55 @@ void FamilyTuningRunner::undoTo(int runNumber) {
         emit message(tr("Gains of run %1 sent.").arg(runNumber));
         return;
     }
+}
+
+QList<TunerMove> FamilyTuningRunner::tunerMoves() const {
+    QList<TunerMove> moves;
+    for (const TuningMove& m : m_profile.moves) moves << TunerMove{m.name, m.amplitudeUnit, m.amplitude};
+    return moves;
+}
+
+QString FamilyTuningRunner::moveText() const {
+    return move().description + QStringLiteral(".\n") +
+           m_profile.lines(move().start, m_amplitude).join(QStringLiteral(", ")) + QStringLiteral(" \u2192 ") +
+           m_profile.lines(move().back, m_amplitude).join(QStringLiteral(", "));
+}
+
+QString FamilyTuningRunner::runStartText(int number) const {
+    return tr("Run %1: %2, %3 %4, held %5 ms\u2026")
+        .arg(number)
+        .arg(move().name)
+        .arg(m_amplitude)
+        .arg(move().amplitudeUnit)
+        .arg(m_holdMs);
+}
+
+QStringList FamilyTuningRunner::extraColumns() const {
+    return {tr("Sampled")};
+}
+
+const scope::Capture* FamilyTuningRunner::runCapture(int number) const {
+    for (const FamilyTuningRun& run : m_runs)
+        if (run.number == number) return &run.capture;
+    return nullptr;
+}
+
+TunerRow FamilyTuningRunner::rowOf(const FamilyTuningRun& run) const {
+    TunerRow row{run.number, run.capture, run.metrics, {}, {}, {}, {}};
+    row.extraCells = {run.fault.isEmpty() ? run.source : tr("FAULT %1; %2").arg(run.fault, run.source)};
+    if (!run.fault.isEmpty()) {
+        row.fault = tr("The drive faulted during this run: %1").arg(run.fault);
+        row.status = tr("Run %1: the drive faulted \u2014 %2. The response is shown up to the fault; the next run "
+                        "clears it first (%3).")
+                         .arg(run.number)
+                         .arg(run.fault, m_profile.clearFault.join(QStringLiteral(", ")));
+    } else if (!run.metrics.hasStep) {
+        row.status =
+            tr("Run %1: the response did not move \u2014 is the drive enabled and the move allowed?").arg(run.number);
+    } else {
+        row.status = stepSummary(run.number, run.metrics);
+    }
+    return row;
 }
 
 double FamilyTuningRunner::clock_s() const {

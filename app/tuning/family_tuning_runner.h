@@ -7,6 +7,7 @@
 // GUI thread; never blocks.
 #pragma once
 
+#include "tuner.h"
 #include "tuning_profile.h"
 
 #include "scope/capture.h"
@@ -39,7 +40,7 @@ struct FamilyTuningRun {
                                  // response is shown up to it; Run Continuously stops
 };
 
-class FamilyTuningRunner final : public QObject {
+class FamilyTuningRunner final : public Tuner {
     Q_OBJECT
 public:
     explicit FamilyTuningRunner(TuningProfile profile, QObject* parent = nullptr);
@@ -49,31 +50,38 @@ public:
     const TuningProfile& profile() const { return m_profile; }
 
     void setGain(const QString& name, double value); // gainConfirmed() or gainRefused() follows
-    void readGains();                                // gainsRead()
+    void readGains() override;                       // gainsRead()
     const QMap<QString, double>& gains() const { return m_gains; }
 
-    void setMove(int index, int amplitude, int holdMs);
+    void setMove(int index, int amplitude, int holdMs) override;
     const TuningMove& move() const { return m_profile.moves.at(m_moveIndex); }
     int amplitude() const { return m_amplitude; }
     int holdMs() const { return m_holdMs; }
 
-    void runOnce();
-    void runContinuously();
-    void stop(); // after the run in progress
-    bool isRunning() const { return m_running; }
-    bool isContinuous() const { return m_continuous; }
+    void runOnce() override;
+    void runContinuously() override;
+    void stop() override; // after the run in progress
+    bool isRunning() const override { return m_running; }
+    bool isContinuous() const override { return m_continuous; }
     const QList<FamilyTuningRun>& runs() const { return m_runs; }
-    void undoTo(int runNumber); // sends that run's gains where they differ
+    void undoTo(int runNumber) override;
+
+    // The Tuning panel's view (Tuner).
+    QList<TuningGain> tunerGains() const override { return m_profile.gains; }
+    QString gainsNote() const override { return m_profile.prepareNote; }
+    void writeGain(const QString& name, double value) override { setGain(name, value); }
+    QList<TunerMove> tunerMoves() const override;
+    QString moveText() const override;
+    QString runStartText(int number) const override;
+    QStringList extraColumns() const override;
+    QPair<QString, QString> bodeProbes() const override { return {m_profile.command, m_profile.monitor}; }
+    const scope::Capture* runCapture(int number) const override;
 
 signals:
     void gainConfirmed(const QString& name, double value);
     void gainRefused(const QString& name, const QString& why);
     void gainsRead(const QMap<QString, double>& gains);
-    void runStarted(int number);
     void runFinished(const app::FamilyTuningRun& run);
-    void runFailed(const QString& why); // no run was added
-    void stateChanged();
-    void message(const QString& text);
 
 private:
     using Answered = std::function<void(const QList<serialport::LineAnswer>&)>;
@@ -88,6 +96,7 @@ private:
     void checkFault(scope::Capture capture, const QString& source); // then finishRun
     void finishRun(scope::Capture capture, const QString& source, const QString& fault);
     void fail(const QString& why);
+    TunerRow rowOf(const FamilyTuningRun& run) const;
     void endRuns();
     double clock_s() const; // the drive's clock on the simulator, the wall's on a real link
     void waitUntil(double clock_s, std::function<void()> then);

@@ -2,6 +2,7 @@
 #include "tuning_frame.h"
 
 #include "app/scope/scope_view.h"
+#include "scope/signal_analysis.h"
 
 #include <QColor>
 #include <QFormLayout>
@@ -117,6 +118,13 @@ int selectedRunNumber(const QTableWidget* runs) {
 
 QString milliseconds(const std::optional<double>& seconds) {
     return seconds ? QString::number(*seconds * 1000, 'f', 1) : QStringLiteral("\u2014");
+}
+
+QString stepSummary(int runNumber, const scope::StepMetrics& metrics) {
+    return QObject::tr("Run %1: overshoot %2 %, rise %3 ms, settle %4 ms.")
+        .arg(runNumber)
+        .arg(metrics.overshoot_pct, 0, 'f', 1)
+        .arg(milliseconds(metrics.rise_s), milliseconds(metrics.settling_s));
 }
 
 } // namespace app

@@ -1,6 +1,5 @@
-// The frame every family's Tuning dock shares (the BDS5's TuningPanel and the SC750's and PMC-960's
-// FamilyTuningPanel): the controls scrolled on the left; on the right the scope over the runs table and its
-// buttons. The runs table: one read-only row per run, whole rows selected, the run's number first, its gains
+// The Tuning panel's frame (tuning_panel.h) and the pieces a family's own controls are built of (the BDS5's TUNE
+// group): the controls scrolled on the left; on the right the scope over the runs table and its buttons. The runs table: one read-only row per run, whole rows selected, the run's number first, its gains
 // changed second, and its measurements. GUI thread only.
 #pragma once
 
@@ -10,6 +9,10 @@
 #include <QStringList>
 
 #include <optional>
+
+namespace scope {
+struct StepMetrics;
+}
 
 class QFormLayout;
 class QLabel;
@@ -70,5 +73,7 @@ void appendRun(QTableWidget* runs, const RunRow& row);
 int selectedRunNumber(const QTableWidget* runs); // 0 when no row is selected
 
 QString milliseconds(const std::optional<double>& seconds); // "12.5", or a dash when there is none
+// "Run 3: overshoot 12.5 %, rise 4.1 ms, settle 20.0 ms."
+QString stepSummary(int runNumber, const scope::StepMetrics& metrics);
 
 } // namespace app

@@ -25,6 +25,7 @@ struct TuningGain {
     int decimals = 0;    // a real-valued gain shows some
     QString unit;        // "Hz", "A/(rad/s)", ""
     QString description; // the manual's words
+    bool isSwitch = false; // on or off (a check box): the BDS5's LPF, PL, PROP, PLIM
 };
 
 struct TuningMove {

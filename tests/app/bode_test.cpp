@@ -7,7 +7,9 @@
 #include "app/main_window.h"
 #include "app/scope/bode_view.h"
 #include "app/scope/scope_controller.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "app/scope/variable_watcher.h"
 #include "app/scope/watch_view.h"
 
@@ -41,7 +43,7 @@ struct Window {
     }
     bool enabled() {
         if (!QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs)) return false;
-        window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0); // PMAX/PMIN off
+        window.scopeController().tuningRunner().setGain(QStringLiteral("PLIM"), 0); // PMAX/PMIN off
         window.connection().sendCommand(QStringLiteral("EN"));
         return QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs);
     }
@@ -61,7 +63,7 @@ private slots:
         Window w;
         QVERIFY(w.enabled());
         app::ScopeController& scope = w.window.scopeController();
-        app::TuningRunner& runner = scope.tuningPanel()->runner();
+        app::TuningRunner& runner = scope.tuningRunner();
         // The velocity loop alone (PL OFF) and a command that steps within a millisecond, as for the step test.
         runner.setGain(QStringLiteral("PL"), 0);
         // ACC may not pass AMAX (L2186), which changes only while disabled (L2180).
@@ -71,7 +73,7 @@ private slots:
         move.kind = app::TestMove::Kind::FrequencyStep;
         move.amplitude = 100;
         move.durationMs = 400;
-        scope.tuningPanel()->setTestMove(move);
+        app::setTestMove(*scope.tuningPanel(), move);
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.tune(30, 2);
         QVERIFY(runs.wait(2 * kDriveTimeoutMs));

@@ -10,7 +10,9 @@
 #include "app/drive/terminal_widget.h"
 #include "families/bds5/record/play_terminal_fold.h"
 #include "app/scope/scope_controller.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "families/bds5/tuning/tuning_runner.h"
 
 #include "serialport/bds5_session.h"
@@ -167,7 +169,7 @@ private slots:
         window.show();
         QTRY_VERIFY_WITH_TIMEOUT(atPrompt(window), kDriveTimeoutMs);
         app::TuningPanel* panel = window.scopeController().tuningPanel();
-        app::TuningRunner& runner = panel->runner();
+        app::TuningRunner& runner = panel->runner<app::TuningRunner>();
         // The factory PMAX/PMIN (+-100 counts) stop a jog at once (ERR 23): PLIM off, then enable.
         runner.setGain(QStringLiteral("PLIM"), 0);
         window.connection().sendCommand(QStringLiteral("EN"));
@@ -175,7 +177,7 @@ private slots:
         app::TestMove move;
         move.amplitude = 200;
         move.durationMs = 25; // a short run: 50 samples to list
-        panel->setTestMove(move);
+        app::setTestMove(*panel, move);
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.runOnce();
         QVERIFY(runs.wait(kDriveTimeoutMs));

@@ -9,7 +9,8 @@
 #include "families/sc750/sc750_workspace.h"
 #include "app/scope/bode_view.h"
 #include "app/scope/scope_view.h"
-#include "app/tuning/family_tuning_panel.h"
+#include "app/tuning/family_tuning_runner.h"
+#include "app/tuning/tuning_panel.h"
 
 #include "scope/scope_plot.h"
 
@@ -36,7 +37,7 @@
 
 #include <algorithm>
 
-using app::FamilyTuningPanel;
+using app::TuningPanel;
 using app::MainWindow;
 using drive_core::DriveFamily;
 
@@ -65,7 +66,7 @@ app::FamilyWorkspace* connectSimulated(MainWindow& window, DriveFamily family) {
 }
 
 // Opens the family's Tuning Panel from its menu and waits until the gains are read.
-FamilyTuningPanel* openPanel(MainWindow& window, app::FamilyWorkspace& ws, const QString& gain) {
+TuningPanel* openPanel(MainWindow& window, app::FamilyWorkspace& ws, const QString& gain) {
     QDockWidget* dock = tuningDock(ws);
     if (!dock) return nullptr;
     QAction* action = nullptr;
@@ -75,7 +76,7 @@ FamilyTuningPanel* openPanel(MainWindow& window, app::FamilyWorkspace& ws, const
     if (!action) return nullptr;
     action->trigger();
     if (!dock->isVisible()) return nullptr;
-    auto* panel = qobject_cast<FamilyTuningPanel*>(dock->widget());
+    auto* panel = qobject_cast<TuningPanel*>(dock->widget());
     if (!panel) return nullptr;
     if (!QTest::qWaitFor([&] { return panel->gainMark(gain) == QStringLiteral("\u2713"); }, kTimeoutMs)) return nullptr;
     Q_UNUSED(window);
@@ -83,11 +84,11 @@ FamilyTuningPanel* openPanel(MainWindow& window, app::FamilyWorkspace& ws, const
 }
 
 // Runs once and waits for the run's row; returns that run.
-const app::FamilyTuningRun* runOnce(FamilyTuningPanel& panel) {
+const app::FamilyTuningRun* runOnce(TuningPanel& panel) {
     const int rows = panel.runsTable()->rowCount();
     button(&panel, QStringLiteral("Run Once"))->click();
     if (!QTest::qWaitFor([&] { return panel.runsTable()->rowCount() == rows + 1; }, kTimeoutMs)) return nullptr;
-    return &panel.runner().runs().back();
+    return &panel.runner<app::FamilyTuningRunner>().runs().back();
 }
 
 // The plot as drawn now.
@@ -112,7 +113,7 @@ bool plotted(app::ScopeView* view, const QImage& before) {
 
 // The -3 dB bandwidth of the velocity loop in run `row` of the table, from the panel's Frequency Response
 // (the bench's command probe against its monitor output); 0 when there is none.
-double bandwidthOfRow(FamilyTuningPanel& panel, int row, QString* summary = nullptr) {
+double bandwidthOfRow(TuningPanel& panel, int row, QString* summary = nullptr) {
     panel.runsTable()->selectRow(row);
     app::BodeView* bode = panel.frequencyResponse();
     if (!bode || !bode->isVisible()) return 0;
@@ -149,7 +150,7 @@ private slots:
         app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Sc750);
         QVERIFY(connected);
         auto& ws = *connected;
-        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("KVP"));
+        TuningPanel* panel = openPanel(window, ws, QStringLiteral("KVP"));
         QVERIFY(panel);
         const QImage empty = plotImage(panel->view());
         const double kvp = panel->gainEditor(QStringLiteral("KVP"))->value();
@@ -171,7 +172,7 @@ private slots:
         QVERIFY(plotted(panel->view(), empty));
         const double rise1 = *first->metrics.rise_s;
 
-        QSignalSpy confirmed(&panel->runner(), &app::FamilyTuningRunner::gainConfirmed);
+        QSignalSpy confirmed(&panel->runner<app::FamilyTuningRunner>(), &app::FamilyTuningRunner::gainConfirmed);
         panel->gainEditor(QStringLiteral("KVP"))->setValue(2 * kvp);
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("KVP")), QStringLiteral("\u2713"), kTimeoutMs);
         QCOMPARE(confirmed.count(), 1);
@@ -212,7 +213,7 @@ private slots:
         app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Pmc960);
         QVERIFY(connected);
         auto& ws = *connected;
-        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
+        TuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
         QVERIFY(panel);
         const QImage empty = plotImage(panel->view());
         panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(100); // 4.8.1: TGF100 for the velocity test
@@ -266,7 +267,7 @@ private slots:
         app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Sc750);
         QVERIFY(connected);
         auto& ws = *connected;
-        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("KPP"));
+        TuningPanel* panel = openPanel(window, ws, QStringLiteral("KPP"));
         QVERIFY(panel);
         const double kpp = panel->gainEditor(QStringLiteral("KPP"))->value();
         QVERIFY(kpp > 0);
@@ -279,10 +280,10 @@ private slots:
         panel->hold()->setValue(300);
         button(panel, QStringLiteral("Run Continuously"))->click();
         QTRY_VERIFY_WITH_TIMEOUT(panel->runsTable()->rowCount() == 1, kTimeoutMs);
-        const app::FamilyTuningRun& faulted = panel->runner().runs().back();
+        const app::FamilyTuningRun& faulted = panel->runner<app::FamilyTuningRunner>().runs().back();
         QVERIFY2(faulted.fault.startsWith(QStringLiteral("F 1")), qPrintable(faulted.fault + " / " + panel->statusText()));
-        QVERIFY(!panel->runner().isRunning()); // a continuous series starts its next run as the last one ends
-        QVERIFY(!panel->runner().isContinuous());
+        QVERIFY(!panel->runner<app::FamilyTuningRunner>().isRunning()); // a continuous series starts its next run as the last one ends
+        QVERIFY(!panel->runner<app::FamilyTuningRunner>().isContinuous());
         QVERIFY(panel->runsTable()->item(0, 5)->text().startsWith(QStringLiteral("FAULT F 1")));
         QVERIFY2(panel->statusText().contains(QStringLiteral("faulted")) &&
                      panel->statusText().contains(QStringLiteral("ENABLE=0")),
@@ -309,7 +310,7 @@ private slots:
         app::FamilyWorkspace* connected = connectSimulated(window, DriveFamily::Pmc960);
         QVERIFY(connected);
         auto& ws = *connected;
-        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("FFGAIN"));
+        TuningPanel* panel = openPanel(window, ws, QStringLiteral("FFGAIN"));
         QVERIFY(panel);
         panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(0);
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("FFGAIN")), QStringLiteral("\u2713"), kTimeoutMs);
@@ -361,7 +362,7 @@ private slots:
         window.connectDrive(choice);
         auto& ws = *window.workspace(DriveFamily::Pmc960);
         QTRY_VERIFY_WITH_TIMEOUT(ws.isConnected(), kTimeoutMs);
-        FamilyTuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
+        TuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
         QVERIFY(panel);
         panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(100);
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("FFGAIN")), QStringLiteral("\u2713"), kTimeoutMs);

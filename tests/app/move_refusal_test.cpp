@@ -9,7 +9,9 @@
 #include "app/main_window.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 
 #include "scope/scope_plot.h"
 
@@ -63,8 +65,8 @@ struct Window {
     // At the prompt with the gains and the drive's values read, as the panel shows them after connecting.
     bool ready() {
         if (!QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs)) return false;
-        QSignalSpy values(&panel->runner(), &app::TuningRunner::driveValuesRead);
-        panel->runner().readGains();
+        QSignalSpy values(&panel->runner<app::TuningRunner>(), &app::TuningRunner::driveValuesRead);
+        panel->runner<app::TuningRunner>().readGains();
         return values.wait(kDriveTimeoutMs);
     }
     // What the drive prints for line (P PLIM), as a user typing it would read it.
@@ -147,7 +149,7 @@ private slots:
     void refusedTuningRunAddsNoRowOrOverlay() {
         Window w;
         QVERIFY(w.ready());
-        app::TuningRunner& runner = w.panel->runner();
+        app::TuningRunner& runner = w.panel->runner<app::TuningRunner>();
         runner.setGain(QStringLiteral("PLIM"), 0); // the soft limits are not what this test is about
         w.window.connection().sendCommand(QStringLiteral("DIS"));
         QSignalSpy failed(&runner, &app::TuningRunner::runFailed);
@@ -181,14 +183,14 @@ private slots:
         Window w;
         QVERIFY(w.ready());
         w.window.connection().sendCommand(QStringLiteral("EN"));
-        app::TuningRunner& runner = w.panel->runner();
+        app::TuningRunner& runner = w.panel->runner<app::TuningRunner>();
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         QSignalSpy failed(&runner, &app::TuningRunner::runFailed);
         runner.runOnce();
         QVERIFY(QTest::qWaitFor(
-            [&w] { return w.panel->softLimitsQuestion() && w.panel->softLimitsQuestion()->isVisible(); },
+            [&w] { return app::softLimitsQuestion(*w.panel) && app::softLimitsQuestion(*w.panel)->isVisible(); },
             kDriveTimeoutMs));
-        QMessageBox* question = w.panel->softLimitsQuestion();
+        QMessageBox* question = app::softLimitsQuestion(*w.panel);
         QVERIFY2(question->text().contains(QStringLiteral("PMAX 100")) &&
                      question->text().contains(QStringLiteral("ERR 23")),
                  qPrintable(question->text()));
@@ -218,14 +220,14 @@ private slots:
         Window w;
         QVERIFY(w.ready());
         w.window.connection().sendCommand(QStringLiteral("EN"));
-        app::TuningRunner& runner = w.panel->runner();
+        app::TuningRunner& runner = w.panel->runner<app::TuningRunner>();
         QSignalSpy asked(&runner, &app::TuningRunner::softLimitsInTheWay);
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.runOnce();
         QVERIFY(QTest::qWaitFor(
-            [&w] { return w.panel->softLimitsQuestion() && w.panel->softLimitsQuestion()->isVisible(); },
+            [&w] { return app::softLimitsQuestion(*w.panel) && app::softLimitsQuestion(*w.panel)->isVisible(); },
             kDriveTimeoutMs));
-        w.panel->softLimitsQuestion()->button(QMessageBox::Cancel)->click();
+        app::softLimitsQuestion(*w.panel)->button(QMessageBox::Cancel)->click();
         QVERIFY(!runner.isRunning());
         QVERIFY2(w.panel->statusText().startsWith(QStringLiteral("Not run: the test move would pass the software")),
                  qPrintable(w.panel->statusText()));

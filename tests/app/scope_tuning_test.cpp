@@ -7,11 +7,12 @@
 #include "app_test_support.h"
 #include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
-#include "families/bds5/tuning/gain_editor.h"
 #include "app/scope/measurements_table.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 
 #include "scope/scope_plot.h"
 
@@ -106,7 +107,7 @@ struct Window {
     bool enabled() {
         if (!QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs)) return false;
         // The factory PMAX/PMIN (+-100 counts) stop a jog at once (ERR 23): PLIM off, from the tuning panel.
-        window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0);
+        window.scopeController().tuningRunner().setGain(QStringLiteral("PLIM"), 0);
         window.connection().sendCommand(QStringLiteral("EN"));
         return QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs);
     }
@@ -240,7 +241,7 @@ private slots:
         Window w;
         QVERIFY(w.enabled());
         app::TuningPanel* panel = w.window.scopeController().tuningPanel();
-        app::TuningRunner& runner = panel->runner();
+        app::TuningRunner& runner = panel->runner<app::TuningRunner>();
         // The velocity loop alone (PL OFF) and a command that is a step (ACC high), small enough that ICMD stays
         // below ILIM: the response is then the loop's. Run 1 at KV 1000, run 2 at KV 3000.
         runner.setGain(QStringLiteral("PL"), 0);
@@ -254,13 +255,13 @@ private slots:
         // settles in ~40) leaves room for a busy host's late J 0 (a 50 ms step was cut short under load,
         // its rise read 12.5 ms instead of ~19).
         move.durationMs = 150;
-        panel->setTestMove(move);
+        app::setTestMove(*panel, move);
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.runOnce();
         QVERIFY(runs.wait(kDriveTimeoutMs));
 
         QSignalSpy confirmed(&runner, &app::TuningRunner::gainConfirmed);
-        panel->gainEditor(QStringLiteral("KV"))->spinBox()->setValue(3000);
+        panel->gainEditor(QStringLiteral("KV"))->setValue(3000);
         QVERIFY(confirmed.wait(kDriveTimeoutMs));
         QCOMPARE(confirmed.first().at(0).toString(), QStringLiteral("KV"));
         runner.runOnce();
@@ -312,8 +313,8 @@ private slots:
         app::TuningPanel* panel = w.window.scopeController().tuningPanel();
         app::TestMove move;
         move.durationMs = 30;
-        panel->setTestMove(move);
-        app::TuningRunner& runner = panel->runner();
+        app::setTestMove(*panel, move);
+        app::TuningRunner& runner = panel->runner<app::TuningRunner>();
         runner.runContinuously();
         QTRY_VERIFY_WITH_TIMEOUT(runner.runs().size() >= 3, 3 * kDriveTimeoutMs);
         runner.stop();
@@ -327,7 +328,7 @@ private slots:
     void tune30Hz2GivesAStepOfAbout30Hz() {
         Window w;
         QVERIFY(w.enabled());
-        app::TuningRunner& runner = w.window.scopeController().tuningPanel()->runner();
+        app::TuningRunner& runner = w.window.scopeController().tuningRunner();
         // The velocity loop alone (PL OFF), and ACC high enough that the 100 RPM command is a step within a
         // millisecond: the rise is then the loop's, as in the manual's bandwidth tables.
         runner.setGain(QStringLiteral("PL"), 0);
@@ -337,7 +338,7 @@ private slots:
         app::TestMove move;
         move.amplitude = 100;
         move.durationMs = 100;
-        w.window.scopeController().tuningPanel()->setTestMove(move);
+        app::setTestMove(*w.window.scopeController().tuningPanel(), move);
         QSignalSpy messages(&runner, &app::TuningRunner::message);
         QSignalSpy runs(&runner, &app::TuningRunner::runFinished);
         runner.tune(30, 2);

@@ -6,11 +6,12 @@
 // overlay.
 #include "app/families/bds5/bds5_workspace.h"
 #include "families/bds5/io_panel.h"
-#include "families/bds5/tuning/gain_editor.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
 #include "app/scope/spectrum_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "app_test_support.h"
 
 #include "drive_core/physics/motor_parameters.h"
@@ -99,7 +100,7 @@ private slots:
 
         app::ScopeController& scope = window.scopeController();
         app::TuningPanel& panel = *scope.tuningPanel();
-        app::TuningRunner& runner = panel.runner();
+        app::TuningRunner& runner = panel.runner<app::TuningRunner>();
         // The velocity loop alone at its power-up gains and a true step, as the frequency-response preset wants
         // (see bode_test.cpp).
         runner.setGain(QStringLiteral("PLIM"), 0);
@@ -111,7 +112,7 @@ private slots:
         move.kind = app::TestMove::Kind::FrequencyStep;
         move.amplitude = 300;
         move.durationMs = 400;
-        panel.setTestMove(move);
+        app::setTestMove(panel, move);
         QVERIFY(runOnce(runner));
 
         app::SpectrumView* view = scope.spectrum();
@@ -143,8 +144,8 @@ private slots:
         // The remedy, as a user sets it in the tuning panel: LPF on, LPFHZ a quarter of the resonance.
         const int lpfHz = int(resonance_hz / 4);
         QSignalSpy confirmed(&runner, &app::TuningRunner::gainConfirmed);
-        panel.gainEditor(QStringLiteral("LPFHZ"))->spinBox()->setValue(lpfHz);
-        panel.gainEditor(QStringLiteral("LPF"))->findChild<QCheckBox*>()->setChecked(true);
+        panel.gainEditor(QStringLiteral("LPFHZ"))->setValue(lpfHz);
+        panel.gainSwitch(QStringLiteral("LPF"))->setChecked(true);
         QTRY_COMPARE_WITH_TIMEOUT(confirmed.count(), 2, kDriveTimeoutMs);
         QVERIFY(runOnce(runner));
 

@@ -5,10 +5,11 @@
 #include "app_test_support.h"
 #include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
-#include "families/bds5/tuning/gain_editor.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/scope_view.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 
 #include "scope/scope_plot.h"
 
@@ -45,24 +46,20 @@ struct Window {
     }
     // Enabled, PLIM off (the factory PMAX/PMIN stop a move at once), ILIM lowered, the values read back.
     bool ready() {
-        QSignalSpy values(&panel->runner(), &app::TuningRunner::driveValuesRead);
+        QSignalSpy values(&panel->runner<app::TuningRunner>(), &app::TuningRunner::driveValuesRead);
         if (!QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs)) return false;
-        panel->runner().setGain(QStringLiteral("PLIM"), 0);
-        panel->runner().setGain(QStringLiteral("ILIM"), kIlim);
+        panel->runner<app::TuningRunner>().setGain(QStringLiteral("PLIM"), 0);
+        panel->runner<app::TuningRunner>().setGain(QStringLiteral("ILIM"), kIlim);
         window.connection().sendCommand(QStringLiteral("EN"));
-        panel->runner().readGains();
+        panel->runner<app::TuningRunner>().readGains();
         return values.wait(kDriveTimeoutMs) && QTest::qWaitFor([this] { return driveReady(window); }, kDriveTimeoutMs);
     }
     bool run() {
-        QSignalSpy runs(&panel->runner(), &app::TuningRunner::runFinished);
-        panel->runner().runOnce();
+        QSignalSpy runs(&panel->runner<app::TuningRunner>(), &app::TuningRunner::runFinished);
+        panel->runner<app::TuningRunner>().runOnce();
         return runs.wait(kDriveTimeoutMs);
     }
-    QSpinBox* amplitudeField() const {
-        for (QSpinBox* box : panel->findChildren<QSpinBox*>())
-            if (box->toolTip().startsWith(QStringLiteral("Velocity (J) or counts (MI)"))) return box;
-        return nullptr;
-    }
+    QSpinBox* amplitudeField() const { return panel->amplitude(); }
 };
 } // namespace
 
@@ -78,24 +75,24 @@ private slots:
     void proposedStepStaysBelowIlimAndALargerOneWarns() {
         Window w;
         QVERIFY(w.ready());
-        QCOMPARE(w.panel->runner().driveValues().value(QStringLiteral("ILIM")), double(kIlim));
+        QCOMPARE(w.panel->runner<app::TuningRunner>().driveValues().value(QStringLiteral("ILIM")), double(kIlim));
         app::TestMove move;
         // The J goes out a host round trip after the drive accepted RECORD: under load (ctest -j 4 beside CPU
         // hogs) that was up to ~95 ms of the record, and a 60 ms step's 120 ms record then ended before ICMD
         // peaked. A 150 ms step leaves 300 ms; the velocity step's proposal does not depend on it.
         move.durationMs = 150;
-        w.panel->setTestMove(move);
+        app::setTestMove(*w.panel, move);
         w.panel->useProposedAmplitude();
         const int proposed = w.panel->proposedAmplitude();
         QSpinBox* amplitude = w.amplitudeField();
         QVERIFY(amplitude);
         QCOMPARE(amplitude->value(), proposed);
-        QCOMPARE(w.panel->runner().testMove().amplitude, proposed);
+        QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().amplitude, proposed);
         // Half of ILIM at KV 2000: 0.5 x 0.5 x 2e / (2000 x 5e-6) rad/s = 136 rad/s = 1298 RPM.
         QVERIFY2(proposed > 1000 && proposed < 1500, qPrintable(QString::number(proposed)));
 
         QVERIFY(w.run());
-        const app::TuningRun first = w.panel->runner().runs().last();
+        const app::TuningRun first = w.panel->runner<app::TuningRunner>().runs().last();
         const double icmd1 = peakOf(first.capture, "ICMD");
         qInfo("proposed J %d: ICMD peaks at %.0f, ILIM %d", proposed, icmd1, kIlim);
         QVERIFY(!first.currentSaturated);
@@ -106,8 +103,8 @@ private slots:
         QVERIFY2(icmd1 >= 0.15 * kIlim && icmd1 < 0.9 * kIlim, qPrintable(QString::number(icmd1)));
 
         // ILIM halved: the proposal halves too, the Amplitude field keeps the move the run was made with.
-        QSignalSpy confirmed(&w.panel->runner(), &app::TuningRunner::gainConfirmed);
-        w.panel->runner().setGain(QStringLiteral("ILIM"), kIlim / 2);
+        QSignalSpy confirmed(&w.panel->runner<app::TuningRunner>(), &app::TuningRunner::gainConfirmed);
+        w.panel->runner<app::TuningRunner>().setGain(QStringLiteral("ILIM"), kIlim / 2);
         QVERIFY(confirmed.wait(kDriveTimeoutMs));
         const int halved = w.panel->proposedAmplitude();
         QVERIFY2(std::abs(2 * halved - proposed) <= 1, qPrintable(QString::number(halved)));
@@ -116,9 +113,9 @@ private slots:
 
         // The user types a step eight times that: ICMD reaches ILIM and the panel says so.
         amplitude->setValue(8 * halved);
-        QCOMPARE(w.panel->runner().testMove().amplitude, 8 * halved);
+        QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().amplitude, 8 * halved);
         QVERIFY(w.run());
-        const app::TuningRun second = w.panel->runner().runs().last();
+        const app::TuningRun second = w.panel->runner<app::TuningRunner>().runs().last();
         qInfo("J %d at ILIM %d: ICMD peaks at %.0f", 8 * halved, kIlim / 2, peakOf(second.capture, "ICMD"));
         QVERIFY(second.currentSaturated);
         QVERIFY(peakOf(second.capture, "ICMD") >= 0.98 * kIlim / 2);
@@ -140,26 +137,26 @@ private slots:
         w.panel->useProposedAmplitude();
         const int taken = amplitude->value();
         QCOMPARE(taken, w.panel->proposedAmplitude());
-        const QString move = w.panel->runner().testMove().description();
+        const QString move = w.panel->runner<app::TuningRunner>().testMove().description();
         QVERIFY2(move.startsWith(QStringLiteral("J %1 ").arg(taken)), qPrintable(move));
 
-        QSignalSpy confirmed(&w.panel->runner(), &app::TuningRunner::gainConfirmed);
-        w.panel->gainEditor(QStringLiteral("KV"))->spinBox()->setValue(4000); // as the user tunes
+        QSignalSpy confirmed(&w.panel->runner<app::TuningRunner>(), &app::TuningRunner::gainConfirmed);
+        w.panel->gainEditor(QStringLiteral("KV"))->setValue(4000); // as the user tunes
         QVERIFY(confirmed.wait(kDriveTimeoutMs));
-        w.panel->runner().setGain(QStringLiteral("ILIM"), kIlim / 2);
+        w.panel->runner<app::TuningRunner>().setGain(QStringLiteral("ILIM"), kIlim / 2);
         QVERIFY(confirmed.wait(kDriveTimeoutMs));
-        QSignalSpy values(&w.panel->runner(), &app::TuningRunner::driveValuesRead);
-        w.panel->runner().readGains();
+        QSignalSpy values(&w.panel->runner<app::TuningRunner>(), &app::TuningRunner::driveValuesRead);
+        w.panel->runner<app::TuningRunner>().readGains();
         QVERIFY(values.wait(kDriveTimeoutMs));
         const int now = w.panel->proposedAmplitude();
         QVERIFY2(now < taken / 2, qPrintable(QStringLiteral("%1 %2").arg(now).arg(taken))); // KV x2, ILIM / 2
         QVERIFY(w.panel->proposalText().contains(QString::number(now)));
         QCOMPARE(amplitude->value(), taken);
-        QCOMPARE(w.panel->runner().testMove().description(), move);
+        QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().description(), move);
 
         w.panel->useProposedAmplitude();
         QCOMPARE(amplitude->value(), now);
-        QCOMPARE(w.panel->runner().testMove().amplitude, now);
+        QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().amplitude, now);
     }
 
     void positionStepMovesByItsAmplitudeAndBack() {
@@ -168,17 +165,17 @@ private slots:
         app::TestMove move;
         move.kind = app::TestMove::Kind::PositionStep;
         move.durationMs = 200;
-        w.panel->setTestMove(move);
+        app::setTestMove(*w.panel, move);
         w.panel->useProposedAmplitude();
         const int counts = w.panel->proposedAmplitude();
-        QCOMPARE(w.panel->runner().testMove().amplitude, counts);
+        QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().amplitude, counts);
         // At most the velocity step's 136 rad/s (reached in 13 ms at the power-up ACC, 100000 RPM/s) for a quarter
         // of the hold: 136 rad/s x 0.05 s = 6.8 rad = 4430 counts, at that speed.
         QVERIFY2(counts > 3000 && counts < 6000, qPrintable(QString::number(counts)));
-        QCOMPARE(w.panel->runner().testMove().moveVelocity, 1298);
+        QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().moveVelocity, 1298);
 
         QVERIFY(w.run());
-        const app::TuningRun run = w.panel->runner().runs().last();
+        const app::TuningRun run = w.panel->runner<app::TuningRunner>().runs().last();
         const scope::CaptureChannel* pcmd = run.capture.find("PCMD");
         const scope::CaptureChannel* pfb = run.capture.find("PFB");
         QVERIFY(pcmd && pfb);

@@ -12,7 +12,9 @@
 #include "families/sc750/sc750_workspace.h"
 #include "app/scope/scope_controller.h"
 #include "app/scope/trigger_bar.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 #include "families/bds5/tuning/tuning_runner.h"
 #include "app/scope/variable_watcher.h"
 #include "app/scope/watch_trigger.h"
@@ -107,7 +109,7 @@ private slots:
         window.connectDrive(app::ConnectionChoice::simulator());
         window.show();
         QVERIFY(QTest::qWaitFor([&] { return app_test::driveReady(window); }, kDriveTimeoutMs));
-        window.scopeController().tuningPanel()->runner().setGain(QStringLiteral("PLIM"), 0); // PMAX/PMIN off
+        window.scopeController().tuningRunner().setGain(QStringLiteral("PLIM"), 0); // PMAX/PMIN off
         window.connection().sendCommand(QStringLiteral("EN"));
         QVERIFY(QTest::qWaitFor([&] { return app_test::driveReady(window); }, kDriveTimeoutMs));
 

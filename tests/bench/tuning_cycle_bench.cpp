@@ -6,7 +6,9 @@
 #include "families/bds5/drive_connection.h"
 #include "app/main_window.h"
 #include "app/scope/scope_controller.h"
-#include "families/bds5/tuning/tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
+#include "families/bds5/tuning/bds5_tuning_controls.h"
+#include "families/bds5/tuning/tuning_runner.h"
 
 #include <QApplication>
 #include <QStandardPaths>
@@ -28,8 +30,8 @@ bool driveReady(const app::MainWindow& window) {
 
 void benchMove(app::MainWindow& window, const app::TestMove& move) {
     app::TuningPanel* panel = window.scopeController().tuningPanel();
-    app::TuningRunner& runner = panel->runner();
-    panel->setTestMove(move);
+    app::TuningRunner& runner = panel->runner<app::TuningRunner>();
+    app::setTestMove(*panel, move);
     const qsizetype before = runner.runs().size();
     runner.runContinuously();
     const bool done = QTest::qWaitFor([&] { return runner.runs().size() >= before + kRuns; }, kRuns * kTimeoutMs);
@@ -69,7 +71,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "the simulated drive did not answer\n");
         return 1;
     }
-    app::TuningRunner& runner = window.scopeController().tuningPanel()->runner();
+    app::TuningRunner& runner = window.scopeController().tuningRunner();
     runner.setGain(QStringLiteral("PLIM"), 0); // the factory PMAX/PMIN (+-100 counts) would stop a jog at once
     window.connection().sendCommand(QStringLiteral("EN"));
     if (!QTest::qWaitFor([&] { return driveReady(window); }, kTimeoutMs)) return 1;

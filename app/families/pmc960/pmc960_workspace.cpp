@@ -1,7 +1,7 @@
 // Pmc960Workspace: link and session lifetime, the MPL menu, and the docks that follow the session.
 #include "pmc960_workspace.h"
 
-#include "tuning/family_tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
 
 #include "pmc960_program_transfer.h"
 #include "pmc960_routine_runner.h"

@@ -1,7 +1,7 @@
 // Sc750Workspace: link and session lifetime, the Motion Dialogue menus, editor hooks and the status line.
 #include "sc750_workspace.h"
 
-#include "tuning/family_tuning_panel.h"
+#include "app/tuning/tuning_panel.h"
 
 #include "families/sc750/sc750_error_source.h"
 

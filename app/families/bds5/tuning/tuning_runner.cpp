@@ -5,6 +5,8 @@
 #include "families/bds5/record/scope_catalog.h"
 #include "soft_limits.h"
 
+#include "app/tuning/tuning_frame.h"
+
 #include "scope/play_parser.h"
 #include "serialport/bds5_variable_file.h"
 
@@ -30,7 +32,7 @@ std::optional<int> valueOf(const QString& word) {
 }
 } // namespace
 
-TuningRunner::TuningRunner(DriveConnection& connection, QObject* parent) : QObject(parent), m_connection(connection) {
+TuningRunner::TuningRunner(DriveConnection& connection, QObject* parent) : Tuner(parent), m_connection(connection) {
     qRegisterMetaType<TuningRun>();
 }
 
@@ -63,9 +65,14 @@ void TuningRunner::readGains() {
 void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response) {
     if (m_pendingGains.contains(id)) {
         const QString name = m_pendingGains.take(id);
-        if (response.errors.isEmpty()) return emit gainConfirmed(name, m_gains.value(name));
+        if (response.errors.isEmpty()) {
+            emit gainConfirmed(name, m_gains.value(name));
+            emit gainAnswered(name, m_gains.value(name), {});
+            return emit proposalChanged(); // ILIM and KV go into the proposal
+        }
         const QString why = serialport::describeError(response.errors.first());
         emit gainRefused(name, why);
+        emit gainAnswered(name, m_gains.value(name), why);
         readGains(); // the drive's value is the truth
         return;
     }
@@ -76,6 +83,7 @@ void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response
         for (int i = 0; i < std::min(words.size(), names.size()); ++i)
             if (const double v = words[i].toDouble(&ok); ok) m_driveValues[names[i]] = v;
         emit driveValuesRead();
+        emit proposalChanged();
         // The last of readGains()' answers: a run that waited for them starts with the amplitude the panel has
         // just proposed from these values (on the first run too, not only from the second on).
         if (m_runAfterRead) {
@@ -113,7 +121,12 @@ void TuningRunner::onAnswer(quint64 id, const serialport::Bds5Response& response
         const QStringList words = response.lines.join(QLatin1Char(' ')).split(QLatin1Char(' '), Qt::SkipEmptyParts);
         for (int i = 0; i < std::min(words.size(), names.size()); ++i)
             if (const auto v = valueOf(words[i])) m_gains[names[i]] = *v;
-        if (id == m_readSwitchesId) emit gainsRead(m_gains);
+        if (id == m_readSwitchesId) {
+            emit gainsRead(m_gains);
+            QMap<QString, double> values;
+            for (auto it = m_gains.begin(); it != m_gains.end(); ++it) values.insert(it.key(), it.value());
+            emit gainValuesRead(values);
+        }
         return;
     }
     if (id == m_tuneId) {
@@ -252,6 +265,7 @@ void TuningRunner::onRecorded(const serialport::Bds5TransferResult& result) {
     run.softLimitsOff = m_limitsOff;
     m_runs.append(run);
     emit runFinished(run);
+    emit runShown(rowOf(run));
     if (m_continuous)
         QTimer::singleShot(0, this, &TuningRunner::startRun);
     else
@@ -277,6 +291,99 @@ QString TuningRunner::gainsAsVar() const {
         text += QStringLiteral("%1 %2\n").arg(it.key()).arg(it.value());
     return serialport::Bds5VariableFile::parse(text).toText(
         {tr("Tuning gains saved by ServoDesk's tuning panel."), tr("Variables > Send to Drive sends them back.")});
+}
+
+// The Tuning panel's view.
+
+QList<TuningGain> TuningRunner::tunerGains() const {
+    QList<TuningGain> gains;
+    for (const GainInfo& g : tuningGains())
+        gains << TuningGain{g.name, g.name, double(g.minimum), double(g.maximum), 0, g.unit, g.description, g.isSwitch};
+    return gains;
+}
+
+namespace {
+const TestMove::Kind kKinds[] = {TestMove::Kind::VelocityStep, TestMove::Kind::PositionStep,
+                                 TestMove::Kind::BackAndForth, TestMove::Kind::FrequencyStep};
+}
+
+QList<TunerMove> TuningRunner::tunerMoves() const {
+    QList<TunerMove> moves;
+    for (const TestMove::Kind kind : kKinds) moves << TunerMove{TestMove::kindName(kind), {}, 0};
+    return moves;
+}
+
+// The speed stays while the gains change (the runs' overlays compare one move); a new hold or a proposal taken
+// proposes it again.
+void TuningRunner::setMove(int index, int amplitude, int holdMs) {
+    const bool newHold = holdMs != m_move.durationMs;
+    m_move.kind = kKinds[std::clamp(index, 0, int(std::size(kKinds)) - 1)];
+    m_move.amplitude = amplitude;
+    m_move.durationMs = holdMs;
+    if ((newHold || m_takeProposal) && !m_driveValues.isEmpty())
+        m_moveVelocity = TestMove::proposedMoveVelocity(holdMs, proposalValues());
+    m_takeProposal = false;
+    m_move.moveVelocity = m_move.kind == TestMove::Kind::PositionStep ? m_moveVelocity : 0;
+}
+
+void TuningRunner::useMoveVelocity(int velocity) {
+    m_moveVelocity = velocity > 0 || m_driveValues.isEmpty()
+                         ? velocity
+                         : TestMove::proposedMoveVelocity(m_move.durationMs, proposalValues());
+    m_move.moveVelocity = m_move.kind == TestMove::Kind::PositionStep ? m_moveVelocity : 0;
+}
+
+QString TuningRunner::moveText() const {
+    return m_move.plan().recordLine() + QStringLiteral(" \u2014 ") + m_move.description();
+}
+
+TestMove::DriveValues TuningRunner::proposalValues() const {
+    TestMove::DriveValues values = m_driveValues;
+    for (const char* name : {"ILIM", "KV"}) // the gains as last sent win over the values as last read
+        if (m_gains.contains(QLatin1String(name))) values[QLatin1String(name)] = m_gains.value(QLatin1String(name));
+    return values;
+}
+
+std::optional<int> TuningRunner::proposedAmplitude() const {
+    if (m_driveValues.isEmpty()) return std::nullopt;
+    return TestMove::proposedAmplitude(m_move.kind, m_move.durationMs, proposalValues());
+}
+
+QString TuningRunner::proposalText() const {
+    const auto proposed = proposedAmplitude();
+    return proposed ? tr("Proposed: %1, so that ICMD stays at most about half of ILIM.").arg(*proposed)
+                    : tr("Proposed amplitude: once the drive's values are read.");
+}
+
+QString TuningRunner::runStartText(int number) const {
+    return tr("Run %1: %2").arg(number).arg(m_move.description());
+}
+
+QStringList TuningRunner::extraColumns() const {
+    return {tr("SS error"), tr("Cycle (s)"), QStringLiteral("\u00d7 ideal")};
+}
+
+const scope::Capture* TuningRunner::runCapture(int number) const {
+    return number >= 1 && number <= m_runs.size() ? &m_runs[number - 1].capture : nullptr;
+}
+
+std::optional<GainsFile> TuningRunner::gainsFile() const {
+    return GainsFile{tr("Variable sets (*.var *.VAR);;All files (*)"), QStringLiteral("gains.var"), gainsAsVar()};
+}
+
+TunerRow TuningRunner::rowOf(const TuningRun& run) const {
+    TunerRow row{run.number, run.capture, run.metrics, {}, {}, {}, {}};
+    row.extraCells = {run.metrics.steadyStateError ? QString::number(*run.metrics.steadyStateError, 'f', 1)
+                                                   : QStringLiteral("\u2014"),
+                      QString::number(run.cycle_s, 'f', 2),
+                      QString::number(run.cycle_s / std::max(run.ideal_s, 1e-9), 'f', 2)};
+    if (run.currentSaturated)
+        row.warning = tr("ICMD reached ILIM in run %1: the current saturated, so the step shows the current limit "
+                         "rather than the loop. Lower the amplitude.")
+                          .arg(run.number);
+    row.status = stepSummary(run.number, run.metrics);
+    if (run.softLimitsOff) row.status += tr(" The soft limits were off for it (PLIM=0); PLIM=1 follows the runs.");
+    return row;
 }
 
 } // namespace app
