@@ -30,7 +30,7 @@ QString roleOf(dbds5::DedicatedLabel which) {
 
 Outline bds5Outline(const QString& programText) {
     Outline out;
-    const QStringList lines = programText.split(QLatin1Char('\n'));
+    const QStringList lines = programLines(programText);
     for (qsizetype n = 0; n < lines.size(); ++n) {
         const QString& text = lines[n];
         // Only a line whose first entry ends in $ can be a label: skip the rest without lexing.

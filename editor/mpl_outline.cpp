@@ -18,7 +18,7 @@ bool isBlank(QChar c) {
 Outline mplOutline(const QString& programText) {
     Outline out;
     QHash<QChar, int> first; // label -> 0-based line of its first @-line
-    const QStringList lines = programText.split(QLatin1Char('\n'));
+    const QStringList lines = programLines(programText);
     for (qsizetype n = 0; n < lines.size(); ++n) {
         QString line = lines[n];
         if (line.endsWith(QLatin1Char('\r'))) line.chop(1);

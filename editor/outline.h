@@ -3,7 +3,9 @@
 // label and the run dialogs read only this. Pure data; any thread.
 #pragma once
 
+#include <QRegularExpression>
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
@@ -22,5 +24,12 @@ struct OutlineEntry {
 
 using Outline = std::vector<OutlineEntry>;
 using OutlineOf = Outline (*)(const QString& programText);
+
+// The program's lines as the editor numbers them: a file from a drive or DOS ends its lines in CR LF (or CR),
+// and a label's line must not keep the CR ("10$\r" is no label).
+inline QStringList programLines(const QString& programText) {
+    static const QRegularExpression kLineEnd(QStringLiteral("\r\n|\n|\r"));
+    return programText.split(kLineEnd);
+}
 
 } // namespace editor

@@ -51,7 +51,7 @@ bool reserved(const QString& name) {
 
 Outline servoBasicOutline(const QString& programText) {
     Outline out;
-    const QStringList lines = programText.split(QLatin1Char('\n'));
+    const QStringList lines = programLines(programText);
     for (qsizetype n = 0; n < lines.size(); ++n) {
         auto [code, comment] = splitComment(lines[n]);
         qsizetype at = 0;

@@ -3,6 +3,8 @@
 
 #include "tuning_frame.h"
 
+#include "app/variables/variable_rules.h"
+
 #include "serialport/drive_session.h"
 #include "serialport/simulator_link.h"
 #include "serialport/watch_poller.h"
@@ -323,6 +325,16 @@ const scope::Capture* FamilyTuningRunner::runCapture(int number) const {
     for (const FamilyTuningRun& run : m_runs)
         if (run.number == number) return &run.capture;
     return nullptr;
+}
+
+// The gains as last read or confirmed, in the family's own file (empty until the drive has given them).
+std::optional<GainsFile> FamilyTuningRunner::gainsFile() const {
+    if (m_profile.gainsFileName.isEmpty()) return std::nullopt;
+    QList<QPair<QString, QString>> values;
+    for (const TuningGain& g : m_profile.gains)
+        if (m_gains.contains(g.name)) values.append({g.parameter, QString::number(m_gains.value(g.name), 'g', 10)});
+    const auto file = VariableRules::make(m_profile.family)->fileText(values);
+    return GainsFile{m_profile.gainsFilter, m_profile.gainsFileName, file.text};
 }
 
 TunerRow FamilyTuningRunner::rowOf(const FamilyTuningRun& run) const {

@@ -76,6 +76,7 @@ public:
     QStringList extraColumns() const override;
     QPair<QString, QString> bodeProbes() const override { return {m_profile.command, m_profile.monitor}; }
     const scope::Capture* runCapture(int number) const override;
+    std::optional<GainsFile> gainsFile() const override;
 
 signals:
     void gainConfirmed(const QString& name, double value);

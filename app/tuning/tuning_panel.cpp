@@ -372,6 +372,7 @@ QString TuningPanel::statusText() const {
 void TuningPanel::saveGainsAs() {
     const auto file = m_tuner->gainsFile();
     if (!file) return setStatus(tr("This drive has no file for its gains."));
+    if (file->text.isEmpty()) return setStatus(tr("Nothing to save yet: Read from Drive first."));
     auto* dialog = new QFileDialog(this, tr("Save Gains"), file->defaultName, file->filter);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setAcceptMode(QFileDialog::AcceptSave);
@@ -379,7 +380,7 @@ void TuningPanel::saveGainsAs() {
     connect(dialog, &QFileDialog::fileSelected, this, [this](const QString& path) {
         const auto now = m_tuner->gainsFile(); // the gains as they are when the user picks the file
         QFile out(path);
-        const bool ok = now && out.open(QIODevice::WriteOnly | QIODevice::Truncate) && out.write(now->text.toLatin1()) >= 0;
+        const bool ok = now && !now->text.isEmpty() && out.open(QIODevice::WriteOnly | QIODevice::Truncate) && out.write(now->text.toLatin1()) >= 0;
         setStatus(ok ? tr("Saved the gains to %1.").arg(path) : tr("Cannot write %1.").arg(path));
     });
     dialog->open();

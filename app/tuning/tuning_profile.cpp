@@ -53,6 +53,8 @@ TuningProfile sc750() {
     p.command = QStringLiteral("VEL.CMD");
     p.watch = QStringLiteral("RVEL");
     p.watchUnit = QStringLiteral("RPM");
+    p.gainsFilter = QStringLiteral("Parameter files (*.prm *.PRM);;All files (*)"); // its PARAMS block
+    p.gainsFileName = QStringLiteral("gains.prm");
     for (const TuningGain& g : p.gains) p.readGains << g.parameter;
     // DECISIONS 56: a servo fault latches (FAULTCODE shows it) until ENABLE is written 0; prepare enables again.
     p.faultCheck = {QStringLiteral("FAULTCODE")};
@@ -92,6 +94,8 @@ TuningProfile pmc960() {
     p.command = QStringLiteral("velocity command");
     p.watch = QStringLiteral("V");
     p.watchUnit = QStringLiteral("V units");
+    p.gainsFilter = QStringLiteral("MPL parameter files (*.mpl *.MPL);;All files (*)"); // T-table lines, SW1 ... SW0
+    p.gainsFileName = QStringLiteral("gains.mpl");
     p.readGains = {QStringLiteral("TG?")};
     // The following-error trip returns the drive to IDLE (L223) with #E1, cleared by SM0 then SM1 or SM2
     // (L2382): every move starts with its SM, so SM0 is all a next run needs first.

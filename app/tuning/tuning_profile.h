@@ -52,6 +52,9 @@ struct TuningProfile {
     // following-error trip drops it to IDLE), and the lines a next run sends first to clear the fault.
     QStringList faultCheck;
     QStringList clearFault;
+    // Save Gains: the file the family's Variables > Send to Drive takes back (its VariableRules::fileText).
+    QString gainsFilter;   // "Parameter files (*.prm *.PRM)"
+    QString gainsFileName; // "gains.prm"
 
     const TuningGain* gain(const QString& name) const;
     // The lines that set one gain ("KVP=0.1"; "SW1", "TGV20", "SW0"); the answer to the line at

@@ -34,6 +34,11 @@
 #include <QThread>
 
 #include "serialport/drive_session.h"
+#include "serialport/pmc960_parameter_file.h"
+#include "serialport/sc750_parameter_file.h"
+
+#include <QFile>
+#include <QFileDialog>
 
 #include <algorithm>
 
@@ -204,6 +209,50 @@ private slots:
         panel->gainEditor(QStringLiteral("KVP"))->blockSignals(false);
         button(panel, QStringLiteral("Read from Drive"))->click();
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainEditor(QStringLiteral("KVP"))->value(), kvp, kTimeoutMs);
+    }
+
+    // Save Gains writes the gains the drive holds in the family's own file, as Variables > Send to Drive takes it
+    // back: the SC750's PARAMS block (.PRM, L943-L975) and the PMC-960's T-table lines between SW1 and SW0.
+    void saveGainsWritesTheFamilysFile_data() {
+        QTest::addColumn<DriveFamily>("family");
+        QTest::addColumn<QString>("gain");
+        QTest::addColumn<QString>("line"); // what the file says for it, %1 the value
+        QTest::newRow("sc750") << DriveFamily::Sc750 << QStringLiteral("KVI") << QStringLiteral("KVI = %1");
+        QTest::newRow("pmc960") << DriveFamily::Pmc960 << QStringLiteral("VLGAIN") << QStringLiteral("TGV%1");
+    }
+    void saveGainsWritesTheFamilysFile() {
+        QFETCH(DriveFamily, family);
+        QFETCH(QString, gain);
+        QFETCH(QString, line);
+        MainWindow window;
+        app::FamilyWorkspace* ws = connectSimulated(window, family);
+        QVERIFY(ws);
+        TuningPanel* panel = openPanel(window, *ws, gain);
+        QVERIFY(panel);
+        const double value = panel->gainEditor(gain)->value();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(panel->tuner().gainsFile()->defaultName);
+        QPushButton* save = button(panel, QStringLiteral("Save Gains..."));
+        QVERIFY(save);
+        save->click();
+        auto* dialog = panel->findChild<QFileDialog*>();
+        QVERIFY(dialog);
+        dialog->selectFile(path);
+        QMetaObject::invokeMethod(dialog, "accept", Qt::DirectConnection); // as the Save button does
+        QCOMPARE(panel->statusText(), QStringLiteral("Saved the gains to %1.").arg(path));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromLatin1(file.readAll());
+        QVERIFY2(text.contains(line.arg(value)), qPrintable(text));
+        if (family == DriveFamily::Sc750) {
+            const auto parsed = serialport::Sc750ParameterFile::parse(text);
+            QVERIFY(parsed.problems().isEmpty());
+            QCOMPARE(parsed.assignments().size(), panel->tuner().tunerGains().size());
+        } else {
+            const auto parsed = serialport::Pmc960ParameterFile::parse(text);
+            QVERIFY(parsed.problems().isEmpty());
+            QCOMPARE(parsed.lines().size(), panel->tuner().tunerGains().size() + 2); // SW1 ... SW0
+        }
     }
 
     // PMC-960 (4.8.1): the velocity-loop jog in SM1 shows on the tach; VLGAIN (TGV) doubled makes the rise

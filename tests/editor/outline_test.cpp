@@ -2,6 +2,7 @@
 // manuals' own examples), the dock following the language installed in an editor, and the line that says
 // why the list is empty.
 #include "editor/bds5_language.h"
+#include "editor/bds5_outline.h"
 #include "editor/mpl_language.h"
 #include "editor/mpl_outline.h"
 #include "editor/outline_view.h"
@@ -100,6 +101,31 @@ private slots:
                                                                  "Start: ' the main loop\n"));
         QCOMPARE(namesOf(outline), QStringList({"Start"}));
         QCOMPARE(outline[0].detail, QStringLiteral("the main loop"));
+    }
+
+    // A program saved on DOS or uploaded from a drive ends its lines in CR LF: a label alone on its line (no
+    // comment after it) is still a label, at the line the editor shows. Found in the tour: MOTION.BDS listed
+    // 1$ (it has a comment) and not 10$.
+    void crLfLineEndsKeepEveryLabel_data() {
+        QTest::addColumn<int>("language"); // 0 BDS5, 1 MPL, 2 ServoBASIC
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QStringList>("names");
+        QTest::addColumn<int>("lastLine");
+        QTest::newRow("bds5") << 0 << QStringLiteral("1$ ;START\r\nX1=1\r\n10$\r\nGOTO 10\r\n") << QStringList{"1$", "10$"} << 2;
+        QTest::newRow("mpl") << 1 << QStringLiteral("@G\r\nI+,\r\n@W\r\nLW19\r\n") << QStringList{"G", "W"} << 2;
+        QTest::newRow("servobasic") << 2 << QStringLiteral("Start:\r\nGOTO Start\r\nDONE:\r\nEND\r\n")
+                                    << QStringList{"Start", "DONE"} << 2;
+        QTest::newRow("cr only") << 0 << QStringLiteral("1$\rX1=1\r10$\r") << QStringList{"1$", "10$"} << 2;
+    }
+    void crLfLineEndsKeepEveryLabel() {
+        QFETCH(int, language);
+        QFETCH(QString, text);
+        QFETCH(QStringList, names);
+        QFETCH(int, lastLine);
+        const OutlineOf of[] = {bds5Outline, mplOutline, servoBasicOutline};
+        const Outline outline = of[language](text);
+        QCOMPARE(namesOf(outline), names);
+        QCOMPARE(outline.back().line, lastLine);
     }
 
     void theDockListsWhateverLanguageTheEditorHas_data() {
