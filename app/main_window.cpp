@@ -44,7 +44,7 @@ namespace app {
 namespace {
 constexpr int kStatusMessageMs = 10000;
 constexpr double kTerminalShare = 0.30; // of the window height, on first show: the program comes first
-constexpr QSize kDefaultSize(1200, 800); // on a screen that has room for it
+constexpr QSize kDefaultSize(1280, 800); // on a screen that has room for it; a 1366×768 laptop gets 1280×704
 } // namespace
 
 MainWindow::MainWindow(drive_core::DriveFamily family, QWidget* parent)
