@@ -6,6 +6,8 @@
 # the executions per target.
 #   packaging/fuzz-campaign.sh TARGET EXECUTIONS     e.g. fuzz-campaign.sh capture_files_fuzz 10000000
 #   packaging/fuzz-campaign.sh --totals              the ledger's sums
+# Two runs of one target may go side by side, one a core, when each has its own SERVODESK_FUZZ_RUN (a
+# suffix for its work corpus and log, e.g. 2); each adds its own row.
 # Exit status 0 when the run ended without a finding; 1 with a finding (the reproducer is in
 # build-fuzz/<name>-artifacts/, the row says FINDING); 2 on bad arguments. A run stopped early (SIGINT to
 # the fuzzer, e.g. `pkill -INT -f build-fuzz/.*/NAME` to free the machine for CI) is no finding: its row
@@ -40,9 +42,10 @@ read -r name dir corpus seeds flags <<<"$line"
 commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?') # the code the run fuzzes
 build_fuzzers "$name"
 
-work=$build/$name-campaign
-artifacts=$build/$name-artifacts/
-log=$build/$name-campaign.log
+run=${SERVODESK_FUZZ_RUN:-}
+work=$build/$name-campaign$run
+artifacts=$build/$name-artifacts$run/
+log=$build/$name-campaign$run.log
 mkdir -p "$work" "$artifacts" "$root/$corpus"
 more=()
 [ "$seeds" != - ] && more=("$root/$seeds")
@@ -58,7 +61,7 @@ kept=0
 if [ "$found" = 0 ]; then
     before=$(find "$root/$corpus" -type f | wc -l)
     # shellcheck disable=SC2086
-    "$build/$dir/$name" -merge=1 "$root/$corpus" "$work" $flags >"$build/$name-merge.log" 2>&1
+    "$build/$dir/$name" -merge=1 "$root/$corpus" "$work" $flags >"$build/$name-merge$run.log" 2>&1
     kept=$(( $(find "$root/$corpus" -type f | wc -l) - before ))
 fi
 [ -f "$ledger" ] || printf '%s\n' \
@@ -67,7 +70,7 @@ fi
     '`packaging/fuzz-campaign.sh --totals` sums them per target.' '' \
     '| date | commit | target | executions | result | seed | kept |' \
     '| --- | --- | --- | --- | --- | --- | --- |' >"$ledger"
-result=$([ "$found" = 0 ] && echo "no finding" || echo "FINDING (see $name-artifacts)")
+result=$([ "$found" = 0 ] && echo "no finding" || echo "FINDING (see $name-artifacts$run)")
 [ "$stopped" = 1 ] && result="no finding (stopped at $done_runs of $executions)"
 printf '| %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$commit" "$name" "$done_runs" "$result" "$seed" \
     "$kept" >>"$ledger"
