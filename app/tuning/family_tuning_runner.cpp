@@ -298,7 +298,9 @@ void FamilyTuningRunner::undoTo(int runNumber) {
 
 QList<TunerMove> FamilyTuningRunner::tunerMoves() const {
     QList<TunerMove> moves;
-    for (const TuningMove& m : m_profile.moves) moves << TunerMove{m.name, m.amplitudeUnit, m.amplitude};
+    for (const TuningMove& m : m_profile.moves)
+        moves << TunerMove{m.name, m.amplitudeUnit, m.amplitude,
+                           tr("Amplitude in %1. %2.").arg(m.amplitudeUnit, m.description)};
     return moves;
 }
 

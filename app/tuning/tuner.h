@@ -24,6 +24,7 @@ struct TunerMove {
     QString name;       // "Velocity step", "Velocity loop: jog in SM1 (4.8.1)"
     QString unit;       // of its amplitude: "RPM", "counts"
     int amplitude = 0;  // taken when the user picks it and the family proposes none; 0: the field keeps its value
+    QString tip;        // what the amplitude is, for the Amplitude field's and the preset's tooltips
 };
 
 // A finished run as the panel shows it: its overlay, its row and its status line.

@@ -175,7 +175,10 @@ void TuningPanel::addGain(QWidget* box, QFormLayout* form, const TuningGain& g) 
 QWidget* TuningPanel::buildTestMove() {
     const auto [box, form] = addControlGroup(this, tr("Test move"));
     m_move = new QComboBox(box);
-    for (const TunerMove& m : m_tuner->tunerMoves()) m_move->addItem(m.name);
+    for (const TunerMove& m : m_tuner->tunerMoves()) {
+        m_move->addItem(m.name);
+        m_move->setItemData(m_move->count() - 1, m.tip, Qt::ToolTipRole);
+    }
     m_amplitude = new QSpinBox(box);
     m_amplitude->setRange(1, 1'000'000);
     const int first = m_tuner->tunerMoves().value(0).amplitude;
@@ -263,8 +266,9 @@ QString TuningPanel::gainMark(const QString& name) const {
 
 void TuningPanel::applyMove() {
     m_tuner->setMove(m_move->currentIndex(), m_amplitude->value(), m_hold->value());
-    const QString unit = m_tuner->tunerMoves().value(m_move->currentIndex()).unit;
-    m_amplitude->setSuffix(unit.isEmpty() ? QString() : QLatin1Char(' ') + unit);
+    const TunerMove move = m_tuner->tunerMoves().value(m_move->currentIndex());
+    m_amplitude->setSuffix(move.unit.isEmpty() ? QString() : QLatin1Char(' ') + move.unit);
+    m_amplitude->setToolTip(move.tip);
     m_moveText->setText(m_tuner->moveText());
 }
 

@@ -37,10 +37,12 @@ public:
     explicit TuningPanel(Tuner* tuner, QWidget* parent = nullptr);
 
     Tuner& tuner() { return *m_tuner; }
-    // The family's own runner behind the Tuner (TuningRunner, FamilyTuningRunner).
+    // The family's own runner behind the Tuner (TuningRunner, FamilyTuningRunner); asking for another is a bug.
     template <typename Runner>
     Runner& runner() {
-        return static_cast<Runner&>(*m_tuner);
+        auto* runner = qobject_cast<Runner*>(m_tuner);
+        if (!runner) qFatal("TuningPanel::runner: the panel's tuner is a %s", m_tuner->metaObject()->className());
+        return *runner;
     }
     ScopeView* view() const { return m_view; }
     QTableWidget* runsTable() const { return m_runsTable; }

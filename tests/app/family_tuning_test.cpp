@@ -164,6 +164,8 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("KVFF")), QStringLiteral("\u2713"), kTimeoutMs);
         panel->movePreset()->setCurrentIndex(0); // velocity step
         panel->amplitude()->setValue(200);
+        QVERIFY2(panel->amplitude()->toolTip().startsWith(QStringLiteral("Amplitude in RPM. GO.VEL at RUN.SPEED")),
+                 qPrintable(panel->amplitude()->toolTip()));
         panel->hold()->setValue(150);
 
         const app::FamilyTuningRun* first = runOnce(*panel);

@@ -88,6 +88,7 @@ private slots:
         QVERIFY(amplitude);
         QCOMPARE(amplitude->value(), proposed);
         QCOMPARE(w.panel->runner<app::TuningRunner>().testMove().amplitude, proposed);
+        QVERIFY2(amplitude->toolTip().contains(QStringLiteral("jog velocity (J)")), qPrintable(amplitude->toolTip()));
         // Half of ILIM at KV 2000: 0.5 x 0.5 x 2e / (2000 x 5e-6) rad/s = 136 rad/s = 1298 RPM.
         QVERIFY2(proposed > 1000 && proposed < 1500, qPrintable(QString::number(proposed)));
 

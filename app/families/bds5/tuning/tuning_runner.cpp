@@ -309,7 +309,14 @@ const TestMove::Kind kKinds[] = {TestMove::Kind::VelocityStep, TestMove::Kind::P
 
 QList<TunerMove> TuningRunner::tunerMoves() const {
     QList<TunerMove> moves;
-    for (const TestMove::Kind kind : kKinds) moves << TunerMove{TestMove::kindName(kind), {}, 0};
+    const QString proposed = tr(" Proposed from the drive's ILIM, IMAX, KV, ACC and units so that ICMD stays at most "
+                                "about half of ILIM.");
+    for (const TestMove::Kind kind : kKinds) {
+        const bool distance = kind == TestMove::Kind::PositionStep;
+        const QString what = distance ? tr("The distance of the incremental move (MI), in the drive's position units.")
+                                      : tr("The jog velocity (J), in the drive's velocity units.");
+        moves << TunerMove{TestMove::kindName(kind), {}, 0, what + proposed};
+    }
     return moves;
 }
 
