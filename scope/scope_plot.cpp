@@ -62,7 +62,7 @@ ScopePlot::ScopePlot(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     m_plot->axisRect()->setRangeZoom(Qt::Horizontal);
     m_plot->xAxis->setLabel(tr("Time [s]"));
     m_plot->legend->setVisible(true);
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft); // steps start low and left
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft); // until a trace is under it
     m_valueAxes = {m_plot->yAxis};
     for (int i = 0; i < 2; ++i) {
         m_cursor[i] = new QCPItemStraightLine(m_plot);
@@ -88,6 +88,7 @@ ScopePlot::ScopePlot(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, &ScopePlot::onDoubleClick);
     // After the layout, before drawing: the axis rect's width is final, for replots and exports alike.
     connect(m_plot, &QCustomPlot::afterLayout, this, &ScopePlot::decimateGraphs);
+    connect(m_plot, &QCustomPlot::afterLayout, this, &ScopePlot::placeLegend); // over what was just decimated
     m_syncTimer.setSingleShot(true);
     m_syncTimer.setInterval(kSyncMs);
     connect(&m_syncTimer, &QTimer::timeout, this, &ScopePlot::syncFromStore);
@@ -240,6 +241,53 @@ void ScopePlot::decimateGraphs() {
     feed(m_store, m_graphs);
     for (const Overlay& o : m_overlays)
         if (o.visible) feed(o.store, o.graphs);
+}
+
+namespace {
+PixelBox pixelBox(const QRect& r) {
+    return {double(r.left()), double(r.top()), double(r.width()), double(r.height())};
+}
+} // namespace
+
+// The visible graphs as the frame draws them, in the plot's pixels.
+std::vector<std::vector<PixelPoint>> ScopePlot::drawnTraces() const {
+    std::vector<std::vector<PixelPoint>> traces;
+    for (int g = 0; g < m_plot->graphCount(); ++g) {
+        const QCPGraph* graph = m_plot->graph(g);
+        if (!graph->visible()) continue;
+        std::vector<PixelPoint>& trace = traces.emplace_back();
+        trace.reserve(std::size_t(graph->data()->size()));
+        for (const QCPGraphData& d : *graph->data()) {
+            const QPointF p = graph->coordsToPixels(d.key, d.value);
+            trace.push_back({p.x(), p.y()});
+        }
+    }
+    return traces;
+}
+
+int ScopePlot::tracesUnderLegend() const {
+    const QCPLegend* legend = m_plot->legend;
+    if (!legend->visible() || legend->itemCount() == 0) return 0;
+    return segmentsThrough(drawnTraces(), pixelBox(legend->outerRect()));
+}
+
+// The legend goes to the corner of the plot area where it hides the least of the drawn graphs (legend_corner.h),
+// laid out again at once so that this frame draws it there.
+void ScopePlot::placeLegend() {
+    const QCPLegend* legend = m_plot->legend;
+    if (!legend->visible() || legend->itemCount() == 0) return;
+    const QSize size = legend->outerRect().size();
+    const LegendCorner corner = bestLegendCorner(drawnTraces(), pixelBox(m_plot->axisRect()->rect()), size.width(),
+                                                 size.height(), 0, m_legendCorner);
+    if (corner == m_legendCorner) return;
+    m_legendCorner = corner;
+    const Qt::Alignment horizontal =
+        corner == LegendCorner::TopLeft || corner == LegendCorner::BottomLeft ? Qt::AlignLeft : Qt::AlignRight;
+    const Qt::Alignment vertical =
+        corner == LegendCorner::TopLeft || corner == LegendCorner::TopRight ? Qt::AlignTop : Qt::AlignBottom;
+    QCPLayoutInset* inset = m_plot->axisRect()->insetLayout();
+    inset->setInsetAlignment(0, horizontal | vertical);
+    inset->update(QCPLayoutElement::upLayout);
 }
 
 // The current trace's channels grouped onto value axes (axis_groups.h); every graph, an overlay's too, goes

@@ -12,6 +12,7 @@
 #include "capture.h"
 #include "cursor_keys.h"
 #include "cursor_readout.h"
+#include "legend_corner.h"
 #include "series_store.h"
 
 #include <QTimer>
@@ -41,6 +42,8 @@ public:
     ~ScopePlot() override;
 
     QCustomPlot* customPlot() const { return m_plot; }
+    // How many segments of the drawn graphs the legend hides where the last frame drew it (0: none).
+    int tracesUnderLegend() const;
 
     // Shows a capture as the current trace. keepPrevious: the trace shown so far becomes the newest
     // overlay (the oldest beyond maxOverlays() goes); otherwise every overlay is dropped.
@@ -119,6 +122,8 @@ private:
     ColumnGraph* addGraph();
     void beginTrace(const std::vector<std::pair<std::string, std::string>>& namesAndUnits, std::size_t capacity);
     void decimateGraphs();
+    void placeLegend();
+    std::vector<std::vector<PixelPoint>> drawnTraces() const;
     void syncFromStore();
     void scheduleSync();
     void requestReplot();
@@ -140,6 +145,7 @@ private:
     Capture m_capture; // the current trace when it came as a capture (cursors read it)
     QString m_title;
     QList<ColumnGraph*> m_graphs;    // current trace, one per channel
+    LegendCorner m_legendCorner = LegendCorner::TopLeft;
     std::optional<DrawnFor> m_drawn; // what the graphs hold now; nullopt: decimate on the next frame
     std::deque<Overlay> m_overlays;  // newest first
     QList<QCPAxis*> m_valueAxes;

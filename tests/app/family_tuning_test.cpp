@@ -266,6 +266,8 @@ private slots:
         auto& ws = *connected;
         TuningPanel* panel = openPanel(window, ws, QStringLiteral("VLGAIN"));
         QVERIFY(panel);
+        tuningDock(ws)->setFloating(true); // at the tour's size: a plot the user reads, beside the gains
+        tuningDock(ws)->resize(1240, 600);
         const QImage empty = plotImage(panel->view());
         panel->gainEditor(QStringLiteral("FFGAIN"))->setValue(100); // 4.8.1: TGF100 for the velocity test
         QTRY_COMPARE_WITH_TIMEOUT(panel->gainMark(QStringLiteral("FFGAIN")), QStringLiteral("\u2713"), kTimeoutMs);
@@ -291,6 +293,9 @@ private slots:
         QCOMPARE(panel->runsTable()->item(1, 1)->text(), QStringLiteral("VLGAIN=16"));
         QVERIFY2(fast && fast->metrics.rise_s, qPrintable(panel->statusText()));
         QVERIFY2(*fast->metrics.rise_s < 0.7 * rise1, qPrintable(QStringLiteral("%1 vs %2").arg(*fast->metrics.rise_s).arg(rise1)));
+        // The jog starts 20 ms in and rises to the top: the legend is not left over the rise the user tunes.
+        QVERIFY(!plotImage(panel->view()).isNull());
+        QCOMPARE(panel->view()->plot()->tracesUnderLegend(), 0);
 
         // The velocity loop's frequency response (the summing junction's command -> the tach): four times
         // VLGAIN, a wider loop.
