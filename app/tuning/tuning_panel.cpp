@@ -106,6 +106,9 @@ TuningPanel::TuningPanel(Tuner* tuner, QWidget* parent)
 QWidget* TuningPanel::buildGains() {
     const auto [box, form] = addControlGroup(this, tr("Gains"));
     for (const TuningGain& g : m_tuner->tunerGains()) addGain(box, form, g);
+    int widest = 0; // every value as wide as the widest ("0.174000 A/(rad/s)"), so that the sliders line up
+    for (const QDoubleSpinBox* spin : std::as_const(m_editors)) widest = std::max(widest, spin->sizeHint().width());
+    for (QDoubleSpinBox* spin : std::as_const(m_editors)) spin->setMinimumWidth(widest);
     addReadGains({box, form}, m_tuner);
     if (const QString note = m_tuner->gainsNote(); !note.isEmpty()) {
         auto* label = new QLabel(note, box);

@@ -24,6 +24,7 @@
 #include <QMenu>
 #include <QProcess>
 #include <QPushButton>
+#include <QSet>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -158,6 +159,11 @@ private slots:
         TuningPanel* panel = openPanel(window, ws, QStringLiteral("KVP"));
         QVERIFY(panel);
         const QImage empty = plotImage(panel->view());
+        // The sliders line up: every value is as wide as KVP's "0.174000 A/(rad/s)".
+        QSet<int> sliderEnds;
+        for (const QString name : {"KVP", "KVI", "KPP", "KVFF", "ARF0"})
+            sliderEnds << panel->gainEditor(name)->mapTo(panel, QPoint()).x();
+        QCOMPARE(sliderEnds.size(), 1);
         const double kvp = panel->gainEditor(QStringLiteral("KVP"))->value();
         QVERIFY(kvp > 0);
         panel->gainEditor(QStringLiteral("KVFF"))->setValue(100); // the velocity loop sees the step itself
