@@ -28,7 +28,7 @@ namespace app {
 
 namespace {
 
-constexpr int kMaxRows = 8;   // rows of a table, tree or list, from the top of its viewport
+constexpr int kMaxRows = 40;  // rows of a table, tree or list, from the top of its viewport
 constexpr int kMaxLines = 40; // lines of a text view or code editor, from the top of its viewport
 constexpr int kMaxChars = 160;
 

@@ -157,8 +157,9 @@ std::vector<ScreenshotTour::Step> sc750TourSteps(MainWindow& window) {
                      },
                      .ready = [&window] {
                          VariableBrowser* browser = sc750(window)->variablesDock()->browser();
-                         for (const char* name : {"ACCEL.RATE", "RUN.SPEED", "POSITION", "IFB"})
-                             if (browser->value(QString::fromLatin1(name)).isEmpty()) return false; // all in view read
+                         // all in view read, down to the last row the shot shows
+                         for (const char* name : {"ACCEL.RATE", "RUN.SPEED", "POSITION", "IFB", "ENABLE", "MODEL"})
+                             if (browser->value(QString::fromLatin1(name)).isEmpty()) return false;
                          return true;
                      },
                      .grab = [&window] { return TourShot::of(sc750(window)->variablesDock()); },
