@@ -2,6 +2,7 @@
 #include "legend_corner.h"
 
 #include <array>
+#include <cmath>
 
 namespace scope {
 
@@ -13,6 +14,10 @@ PixelBox legendBox(const PixelBox& area, double legendWidth, double legendHeight
 }
 
 namespace {
+
+bool finite(const PixelPoint& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
 
 bool inside(const PixelPoint& p, const PixelBox& b) {
     return p.x >= b.left && p.x <= b.left + b.width && p.y >= b.top && p.y <= b.top + b.height;
@@ -45,8 +50,8 @@ int segmentsThrough(const std::vector<std::vector<PixelPoint>>& traces, const Pi
     int count = 0;
     for (const std::vector<PixelPoint>& trace : traces) {
         if (trace.size() == 1 && inside(trace.front(), box)) ++count;
-        for (std::size_t i = 1; i < trace.size(); ++i)
-            if (crosses(trace[i - 1], trace[i], box)) ++count;
+        for (std::size_t i = 1; i < trace.size(); ++i) // a gap (NaN) in the data is drawn as none
+            if (finite(trace[i - 1]) && finite(trace[i]) && crosses(trace[i - 1], trace[i], box)) ++count;
     }
     return count;
 }

@@ -26,7 +26,8 @@ struct PixelBox {
 // The legend's box in `corner` of `area`, `margin` pixels in from its edges.
 PixelBox legendBox(const PixelBox& area, double legendWidth, double legendHeight, double margin, LegendCorner corner);
 
-// How many segments of the polylines cross or touch `box` (a lone point counts when inside).
+// How many segments of the polylines cross or touch `box` (a lone point counts when inside; a segment to or
+// from a NaN point, a gap, does not).
 int segmentsThrough(const std::vector<std::vector<PixelPoint>>& traces, const PixelBox& box);
 
 // The corner for the legend: `current` while nothing hides under it or no corner hides less; otherwise the one

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using scope::bestLegendCorner;
 using scope::LegendCorner;
 using scope::legendBox;
@@ -52,6 +54,8 @@ TEST(LegendCorner, ALineBesideTheBoxIsNotUnderIt) {
     EXPECT_EQ(segmentsThrough({{{0, 70}, {70, 0}}}, box), 0);   // past its bottom-right corner
     EXPECT_EQ(segmentsThrough({{{0, 40}, {40, 0}}}, box), 1);   // across it
     EXPECT_EQ(segmentsThrough({{{15, 15}}}, box), 1);           // a lone sample inside
+    const double gap = std::nan("");
+    EXPECT_EQ(segmentsThrough({{{0, 20}, {gap, gap}, {40, 20}}}, box), 0); // a gap where it would cross
 }
 
 TEST(LegendCorner, TheLegendLeavesTheRisingEdgeForTheEmptyTopRight) {
